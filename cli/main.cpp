@@ -1,0 +1,37 @@
+// rbcsim: entry point. Maps failures onto exit codes (DESIGN.md §1):
+// 0 success, 1 runtime failure (instability, NaN), 2 bad input (usage, config, mesh).
+#include <CLI/CLI.hpp>
+#include <iostream>
+
+#include "command_registry.hpp"
+#include "common/errors.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App application{
+      "rbcsim — red blood cells (discocyte, stomatocyte II, echinocyte III) stretched, sheared\n"
+      "and squeezed through capillaries: D3Q19 lattice Boltzmann plasma, six-force membrane,\n"
+      "immersed-boundary coupling.",
+      "rbcsim"};
+  application.set_version_flag("--version", std::string("rbcsim ") + RBCSIM_VERSION);
+  application.require_subcommand(1);
+  for (const auto& command : rbcsim::cli::registered_commands()) command.attach(application);
+
+  try {
+    application.parse(argc, argv);
+  } catch (const CLI::Success& done) {  // --help, --version
+    return application.exit(done);
+  } catch (const CLI::ParseError& usage) {
+    application.exit(usage);
+    return rbcsim::kExitBadInput;
+  } catch (const rbcsim::InputError& bad_input) {
+    std::cerr << "rbcsim: error: " << bad_input.what() << '\n';
+    return rbcsim::kExitBadInput;
+  } catch (const rbcsim::RuntimeFailure& failure) {
+    std::cerr << "rbcsim: failed: " << failure.what() << '\n';
+    return rbcsim::kExitRuntimeFailure;
+  } catch (const std::exception& unexpected) {
+    std::cerr << "rbcsim: internal error: " << unexpected.what() << '\n';
+    return rbcsim::kExitRuntimeFailure;
+  }
+  return rbcsim::kExitSuccess;
+}

@@ -1,0 +1,28 @@
+// Error kinds that map onto the process exit codes of DESIGN.md §1:
+//   InputError     -> exit 2 (bad usage, config, mesh: the user can fix the input)
+//   RuntimeFailure -> exit 1 (instability, NaN: the simulation itself failed)
+// Messages are one line and name the file (or JSON path) and the problem.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace rbcsim {
+
+class InputError : public std::runtime_error {
+ public:
+  explicit InputError(const std::string& message) : std::runtime_error(message) {}
+  // "FILE: problem" — the form every input diagnostic takes.
+  InputError(const std::string& source, const std::string& problem);
+};
+
+class RuntimeFailure : public std::runtime_error {
+ public:
+  explicit RuntimeFailure(const std::string& message) : std::runtime_error(message) {}
+};
+
+inline constexpr int kExitSuccess = 0;
+inline constexpr int kExitRuntimeFailure = 1;
+inline constexpr int kExitBadInput = 2;
+
+}  // namespace rbcsim
