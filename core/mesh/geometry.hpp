@@ -1,0 +1,41 @@
+// Geometric measures of a triangle mesh (positions in um, so areas in um^2, volumes in um^3).
+// Pure functions on positions + connectivity; the membrane forces and `mesh info` share them.
+#pragma once
+
+#include <span>
+
+#include "mesh/topology.hpp"
+#include "mesh/triangle_mesh.hpp"
+
+namespace rbcsim::mesh {
+
+// Half the cross product of two edges: direction = outward normal, length = area.
+Vec3 triangle_area_vector(std::span<const Vec3> positions_um, const Triangle& triangle);
+double triangle_area_um2(std::span<const Vec3> positions_um, const Triangle& triangle);
+
+double surface_area_um2(const TriangleMesh& mesh);
+// Signed volume by the divergence theorem: positive for outward-oriented closed meshes.
+double enclosed_volume_um3(const TriangleMesh& mesh);
+// v = 6 sqrt(pi) V / A^(3/2): 1 for a sphere, ~0.64 for a discocyte.
+double reduced_volume(double area_um2, double volume_um3);
+
+double edge_length_um(std::span<const Vec3> positions_um, const Edge& edge);
+
+// Signed angle between the outward normals of the edge's two triangles, in (-pi, pi]:
+// positive where the surface is convex (a sphere has theta > 0 on every edge), zero where flat.
+// This is theta_j of the paper's Eq. 13. The paper calls concave pairs positive; we use the
+// opposite (standard) sign so that DeltaA > 0 for convex cells, as for A_outer - A_inner of a
+// real bilayer. Only the relative deviations (DeltaA - DeltaA0)/|DeltaA0| enter the forces, so the
+// choice does not change any force.
+double signed_dihedral_angle_rad(std::span<const Vec3> positions_um, const Edge& edge);
+
+// Sum over edges of M_j = l_j theta_j / 2 (Eq. 13), i.e. the integrated mean curvature in um.
+// The paper's DeltaA (Eq. 12) is 2 D0 times this and C (Eq. 14) is 2 D0 times the sum of |M_j|;
+// D0 (monolayer thickness) cancels in the relative deviations, so we never need its value.
+struct CurvatureSums {
+  double signed_um = 0.0;    // sum of M_j       -> DeltaA / (2 D0)
+  double absolute_um = 0.0;  // sum of |M_j|     -> C / (2 D0)
+};
+CurvatureSums curvature_sums(std::span<const Vec3> positions_um, const MeshTopology& topology);
+
+}  // namespace rbcsim::mesh
