@@ -1,0 +1,33 @@
+# Writes a C++ source that holds files of share/ as string literals, so that the rbcsim binary
+# runs anywhere with its defaults (DESIGN.md §1, "Embedded defaults").
+# Run as: cmake -DBASE_DIR=<share> -DFILES=<a|b|...> -DOUTPUT=<file.cpp> -P embed_files.cmake
+# FILES are paths relative to BASE_DIR separated by '|'. Each byte becomes a \x escape, so any
+# content (quotes, backslashes, non-ASCII) survives unchanged.
+string(REPLACE "|" ";" relative_paths "${FILES}")
+set(entries "")
+foreach(relative_path IN LISTS relative_paths)
+  file(READ "${BASE_DIR}/${relative_path}" bytes HEX)
+  string(LENGTH "${bytes}" hex_length)
+  math(EXPR size "${hex_length} / 2")
+  string(REGEX REPLACE "([0-9a-f][0-9a-f])" "\\\\x\\1" escaped "${bytes}")
+  string(APPEND entries "    {\"${relative_path}\", {\"${escaped}\", ${size}}},\n")
+endforeach()
+list(LENGTH relative_paths count)
+file(WRITE "${OUTPUT}"
+"// Generated at build time by cmake/embed_files.cmake from share/: do not edit.
+#include \"config/embedded_share.hpp\"
+
+#include <array>
+
+namespace rbcsim::config {
+namespace {
+
+constexpr std::array<EmbeddedFile, ${count}> kEmbeddedFiles{{
+${entries}}};
+
+}  // namespace
+
+std::span<const EmbeddedFile> embedded_share_files() { return kEmbeddedFiles; }
+
+}  // namespace rbcsim::config
+")

@@ -1,0 +1,67 @@
+// The resolved configuration of a run and its typed read API.
+//
+// Resolution order (later wins): the option table's defaults <- the morphology's overlay
+// share/config/<morphology>.json (embedded; Table 2 stiffnesses) <- each --config file in order
+// <- each --set key.path=value in order. The morphology is --morphology if given, else the last
+// file or --set that sets `morphology`, else the default. Every source is validated on its own,
+// so a diagnostic names the file (or "--set") and the JSON path.
+#pragma once
+
+#include <filesystem>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "config/option_table.hpp"
+#include "units/unit_converter.hpp"
+
+namespace rbcsim::config {
+
+struct ConfigRequest {
+  // Default member initialisers let callers name only what they set: {.morphology = "..."}.
+  std::optional<std::string> morphology = {};     // --morphology: wins over files and --set
+  std::vector<std::filesystem::path> files = {};  // --config, applied in order
+  std::vector<std::string> assignments = {};      // --set key.path=value, after the files
+};
+
+class Config;
+
+// Throws InputError for unreadable files, JSON syntax errors, unknown keys, wrong types and
+// values out of range.
+Config resolve_config(const ConfigRequest& request = {});
+
+class Config {
+ public:
+  // Typed reads by dotted path. Asking for a path that is not in the option table, or with the
+  // wrong type, is a programming error: std::logic_error.
+  double number(std::string_view path) const;  // number and integer options
+  int integer(std::string_view path) const;
+  bool boolean(std::string_view path) const;
+  std::string string(std::string_view path) const;                    // string and choice options
+  std::vector<std::string> string_list(std::string_view path) const;  // choice lists
+
+  // The whole resolved tree: every option, nested by path.
+  const nlohmann::json& json() const { return tree_; }
+
+ private:
+  friend Config resolve_config(const ConfigRequest& request);
+  explicit Config(nlohmann::json tree) : tree_(std::move(tree)) {}
+  const nlohmann::json& value(std::string_view path,
+                              std::initializer_list<OptionType> readable_types,
+                              std::string_view read_as) const;
+
+  nlohmann::json tree_;
+};
+
+// The lattice units of this configuration (lattice.spacing_um, lattice.relaxation_time,
+// physics.plasma_*); throws InputError for unsafe values.
+units::UnitConverter make_unit_converter(const Config& config);
+
+// The resolved tree plus a "derived" object of the unit converter's derived values: what
+// `config show` prints and a run's config.json starts from. Readable back with --config.
+nlohmann::json config_with_derived_values(const Config& config);
+
+}  // namespace rbcsim::config

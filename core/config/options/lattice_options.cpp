@@ -1,0 +1,21 @@
+#include "config/options/option_areas.hpp"
+
+namespace rbcsim::config {
+
+void add_lattice_options(OptionTable& table) {
+  // dx = 0.5 um against the 2562-vertex cell's ~0.25 um edges gives the paper's S = 0.5.
+  table.add_number("lattice.spacing_um", "um", 0.5, "Lattice spacing dx.").above(0.0);
+  table
+      .add_number("lattice.relaxation_time", "", 1.0,
+                  "Relaxation time tau; fixes dt = (tau - 1/2)/3 dx^2/nu.")
+      .above(0.5);
+  table.add_choice("lattice.collision", {"bgk", "trt"}, "bgk",
+                   "Collision operator: single (BGK) or two relaxation times (TRT).");
+  // 3/16 puts half-way bounce-back walls exactly half-way between nodes for Poiseuille flow.
+  table
+      .add_number("lattice.trt_magic", "", 0.1875,
+                  "TRT magic parameter Lambda = (tau+ - 1/2)(tau- - 1/2).")
+      .above(0.0);
+}
+
+}  // namespace rbcsim::config

@@ -1,0 +1,24 @@
+// One function per area of the option table, each defined in its own file beside this one.
+// A new area: add its file, declare its function here and list it in kOptionAreas.
+#pragma once
+
+#include <array>
+
+#include "config/option_table.hpp"
+
+namespace rbcsim::config {
+
+void add_morphology_options(OptionTable& table);
+void add_physics_options(OptionTable& table);
+void add_lattice_options(OptionTable& table);
+void add_ibm_options(OptionTable& table);
+void add_membrane_options(OptionTable& table);
+void add_mesh_options(OptionTable& table);
+
+using AddOptionArea = void (*)(OptionTable&);
+inline constexpr std::array<AddOptionArea, 6> kOptionAreas{
+    add_morphology_options, add_physics_options,  add_lattice_options,
+    add_ibm_options,        add_membrane_options, add_mesh_options,
+};
+
+}  // namespace rbcsim::config

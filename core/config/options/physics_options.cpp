@@ -1,0 +1,19 @@
+#include "config/options/option_areas.hpp"
+
+namespace rbcsim::config {
+
+void add_physics_options(OptionTable& table) {
+  // HemoCell's plasma values (DESIGN.md §3.1) and the paper's kBT (Table 2).
+  table.add_number("physics.plasma_density_kg_per_m3", "kg/m^3", 1025.0, "Density of the plasma.")
+      .above(0.0);
+  table
+      .add_number("physics.plasma_kinematic_viscosity_m2_per_s", "m^2/s", 1.1e-6,
+                  "Kinematic viscosity of the plasma (or of the suspending medium).")
+      .above(0.0);
+  table
+      .add_number("physics.thermal_energy_J", "J", 4.100531391e-21,
+                  "Thermal energy kBT, the unit of every membrane stiffness k (Table 2).")
+      .above(0.0);
+}
+
+}  // namespace rbcsim::config
