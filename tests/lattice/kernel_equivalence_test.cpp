@@ -171,7 +171,7 @@ TEST(MassConservation, RoundOffOnlyWithPeriodicSlidingAndBounceBack) {
   for (const char* kernel : {"optimised", "reference"}) {
     for (const bool sliding : {false, true}) {
       const Scenario scenario{sliding, false, false, "trt"};
-      const Trajectory trajectory = run(scenario, kernel, 200, 1);
+      const Trajectory trajectory = run(scenario, kernel, 100, 1);
       const double relative_change =
           std::abs(trajectory.final_mass - trajectory.initial_mass) / trajectory.initial_mass;
       EXPECT_LT(relative_change, 1e-12) << kernel << (sliding ? " sliding" : " periodic");
