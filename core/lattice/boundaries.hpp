@@ -4,17 +4,19 @@
 // plane), and the rule supplies it from the post-collision populations f* of x itself.
 //
 //   periodic          the default: x - c_i wraps around the box.
-//   wall              half-way bounce-back, optionally moving (Ladd 1994):
+//   wall              half-way bounce-back, optionally moving (Ladd, J. Fluid Mech. 271, 285
+//                     (1994)):
 //                       f_i(x) = f*_opp(i)(x) + 2 w_i rho(x) c_i.u_w / c_s^2.
 //                     Written with the direction that enters the fluid; with the direction that
 //                     hits the wall it reads -2 w_i rho c_i.u_w / c_s^2. The wall sits half-way
 //                     between x and x - c_i. A velocity inlet is a wall whose velocity points into
 //                     the fluid (the bounce-back-with-velocity inlet), with one velocity per node
 //                     so that a Poiseuille profile can be imposed.
-//   pressure outlet   anti-bounce-back at a given density (Krueger et al., "The Lattice Boltzmann
-//                     Method", 2017, Eq. 5.53):
-//                       f_i(x) = -f*_opp(i)(x) + 2 w_i rho_out (1 + (c_i.u)^2/(2 c_s^4) - u.u/(2
-//                       c_s^2)),
+//   pressure outlet   anti-bounce-back at a given density (Ginzburg, Verhaeghe & d'Humieres,
+//                     Commun. Comput. Phys. 3, 427 (2008); Krueger et al., "The Lattice
+//                     Boltzmann Method", 2017, ch. 5):
+//                       f_i(x) = -f*_opp(i)(x) + 2 w_i rho_out (1 + (c_i.u)^2 / (2 c_s^4)
+//                                                                 - u.u / (2 c_s^2)),
 //                     with u the velocity of x: in a developed outflow du/dn = 0, so this is the
 //                     wall velocity to second order.
 //   Lees-Edwards      sliding periodic images in y (lees_edwards.hpp).
