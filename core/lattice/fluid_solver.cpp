@@ -160,7 +160,7 @@ SteadyStateResult FluidSolver::run_to_steady_state(const SteadyStateCriterion& c
         std::min(criterion.check_interval, criterion.max_steps - result.steps);
     advance(chunk);
     result.steps += chunk;
-    check_finite_velocity();
+    require_finite_velocity();
     double largest_change_squared = 0.0;
     double largest_speed_squared = 0.0;
 #pragma omp parallel for schedule(static) if (grid().worth_threads()) \
@@ -194,7 +194,7 @@ SteadyStateResult FluidSolver::run_to_steady_state(const SteadyStateCriterion& c
   return result;
 }
 
-void FluidSolver::check_finite_velocity() const {
+void FluidSolver::require_finite_velocity() const {
   const auto node_count = static_cast<std::int64_t>(grid().node_count());
   const auto& kinds = setup_.boundaries.kinds();
   std::int64_t first_bad = node_count;

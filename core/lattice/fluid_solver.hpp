@@ -5,7 +5,9 @@
 // One step at time t: collide with the force density F(t) = force field + body force, stream.
 // Afterwards density() and velocity() hold rho(t) and u(t) = (sum_i f_i c_i + F(t)/2) / rho(t) of
 // that collision (Guo forcing): the velocity the immersed boundary interpolates after spreading
-// F(t). The force field is zeroed after every step, ready for the next spread.
+// F(t). The force field is zeroed after every step, ready for the next spread. Results do not
+// depend on the number of OpenMP threads: every kernel gives each node to exactly one thread and
+// reductions are order-independent (max) or summed in a fixed order.
 #pragma once
 
 #include "lattice/collision.hpp"
@@ -80,6 +82,9 @@ class FluidSolver {
   // Steps until the criterion holds or max_steps were taken. Throws rbcsim::RuntimeFailure on a
   // non-finite velocity, naming the step and the node.
   SteadyStateResult run_to_steady_state(const SteadyStateCriterion& criterion);
+  // Throws rbcsim::RuntimeFailure, naming the step and the node, if a fluid node's velocity is
+  // not finite (the flow went unstable).
+  void require_finite_velocity() const;
 
   const LatticeGrid& grid() const { return setup_.grid; }
   const FluidParameters& parameters() const { return parameters_; }
@@ -101,8 +106,6 @@ class FluidSolver {
   void require_geometry_editable() const;
   void mark_boundary_node(std::size_t node);
   void ensure_kernel();
-  // Throws RuntimeFailure if a fluid node's velocity is not finite.
-  void check_finite_velocity() const;
 
   LatticeSetup setup_;
   FluidParameters parameters_;
