@@ -1,0 +1,57 @@
+#include "lattice/collision.hpp"
+
+#include "common/errors.hpp"
+
+#include <array>
+#include <string>
+
+namespace rbcsim::lattice {
+namespace {
+
+RelaxationRates bgk_rates(const CollisionParameters& parameters) {
+  const double omega = 1.0 / parameters.tau;
+  return {omega, omega};
+}
+
+// tau_odd from Lambda = (tau_even - 1/2)(tau_odd - 1/2).
+RelaxationRates trt_rates(const CollisionParameters& parameters) {
+  const double tau_odd = 0.5 + parameters.magic_parameter / (parameters.tau - 0.5);
+  return {1.0 / parameters.tau, 1.0 / tau_odd};
+}
+
+constexpr std::array kCollisionModels = {
+    CollisionModel{"bgk", "single relaxation time (Bhatnagar-Gross-Krook)", bgk_rates},
+    CollisionModel{"trt", "two relaxation times with magic parameter Lambda", trt_rates},
+};
+
+std::string known_model_names() {
+  std::string names;
+  for (const auto& model : kCollisionModels) {
+    names += (names.empty() ? "" : ", ") + std::string(model.name);
+  }
+  return names;
+}
+
+}  // namespace
+
+std::span<const CollisionModel> collision_models() { return kCollisionModels; }
+
+RelaxationRates relaxation_rates(std::string_view model, const CollisionParameters& parameters) {
+  if (!(parameters.tau > 0.5)) {
+    throw InputError("lattice.tau", "must exceed 1/2 (zero or negative viscosity), got " +
+                                        std::to_string(parameters.tau));
+  }
+  if (!(parameters.magic_parameter > 0.0)) {
+    throw InputError("lattice.magic_parameter",
+                     "must be positive, got " + std::to_string(parameters.magic_parameter));
+  }
+  for (const auto& entry : kCollisionModels) {
+    if (entry.name == model) {
+      return entry.rates(parameters);
+    }
+  }
+  throw InputError("lattice.collision", "unknown model \"" + std::string(model) +
+                                            "\"; known models: " + known_model_names());
+}
+
+}  // namespace rbcsim::lattice

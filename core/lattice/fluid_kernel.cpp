@@ -1,0 +1,90 @@
+#include "lattice/fluid_kernel.hpp"
+
+#include "common/errors.hpp"
+#include "lattice/optimised_kernel.hpp"
+#include "lattice/reference_kernel.hpp"
+
+#include <string>
+
+namespace rbcsim::lattice {
+namespace {
+
+template <class Kernel>
+std::unique_ptr<FluidKernel> make(const LatticeSetup& setup) {
+  return std::make_unique<Kernel>(setup);
+}
+
+constexpr std::array kFluidKernels = {
+    FluidKernelEntry{"optimised", "fused stream-collide, AA in-place streaming, vectorised",
+                     make<OptimisedKernel>},
+    FluidKernelEntry{"reference", "plain collide then stream, two arrays", make<ReferenceKernel>},
+};
+
+// A sliding plane must be plain fluid: the interpolated sources of a crossing population are then
+// fluid whatever the offset.
+void check_lees_edwards_planes(const LatticeSetup& setup) {
+  const LatticeGrid& grid = setup.grid;
+  for (int z = 0; z < grid.nz(); ++z) {
+    for (int x = 0; x < grid.nx(); ++x) {
+      for (const int y : {0, grid.ny() - 1}) {
+        if (!setup.boundaries.is_fluid(grid.index(x, y, z))) {
+          throw InputError("lattice.lees_edwards",
+                           "the sliding planes y = 0 and y = ny - 1 must hold fluid only, node (" +
+                               std::to_string(x) + ", " + std::to_string(y) + ", " +
+                               std::to_string(z) + ") is not fluid");
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+FluidArrays::FluidArrays(std::size_t node_count)
+    : populations(kDirections * node_count, 0.0),
+      density(node_count, 0.0),
+      velocity{std::vector<double>(node_count, 0.0), std::vector<double>(node_count, 0.0),
+               std::vector<double>(node_count, 0.0)},
+      force_density{std::vector<double>(node_count, 0.0), std::vector<double>(node_count, 0.0),
+                    std::vector<double>(node_count, 0.0)} {}
+
+std::span<const FluidKernelEntry> fluid_kernels() { return kFluidKernels; }
+
+const FluidKernelEntry& find_fluid_kernel(std::string_view name) {
+  std::string known;
+  for (const auto& entry : kFluidKernels) {
+    if (entry.name == name) {
+      return entry;
+    }
+    known += (known.empty() ? "" : ", ") + std::string(entry.name);
+  }
+  throw InputError("lattice.kernel",
+                   "unknown kernel \"" + std::string(name) + "\"; known kernels: " + known);
+}
+
+std::unique_ptr<FluidKernel> make_fluid_kernel(std::string_view name, const LatticeSetup& setup) {
+  const FluidKernelEntry& entry = find_fluid_kernel(name);
+  if (setup.lees_edwards_velocity) {
+    check_lees_edwards_planes(setup);
+  }
+  return entry.make(setup);
+}
+
+std::vector<double> pre_collision_populations(const LatticeSetup& setup, const FluidArrays& arrays,
+                                              std::size_t time) {
+  if (arrays.layout == PopulationLayout::natural) {
+    return arrays.populations;
+  }
+  const std::size_t node_count = setup.grid.node_count();
+  std::vector<double> post(arrays.populations.size());
+  for (int i = 0; i < kDirections; ++i) {
+    for (std::size_t node = 0; node < node_count; ++node) {
+      post[i * node_count + node] = arrays.populations[kOpposite[i] * node_count + node];
+    }
+  }
+  std::vector<double> pre = post;
+  stream_reference(setup, arrays, post, pre, time);
+  return pre;
+}
+
+}  // namespace rbcsim::lattice

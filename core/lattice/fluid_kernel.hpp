@@ -1,0 +1,88 @@
+// The arrays a fluid kernel works on, what stays fixed during a run, and the stream-collide
+// kernels chosen by name from one table ("reference", "optimised"). A kernel advances the
+// populations by one time step: collision with Guo forcing at every fluid node, then streaming
+// with the boundary rules of boundaries.hpp. All values are in lattice units.
+#pragma once
+
+#include "lattice/boundaries.hpp"
+#include "lattice/collision.hpp"
+#include "lattice/lattice_grid.hpp"
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace rbcsim::lattice {
+
+// One array per Cartesian component, each in grid order.
+using VectorField = std::array<std::vector<double>, 3>;
+
+// How `FluidArrays::populations` is to be read.
+enum class PopulationLayout {
+  natural,  // slot i of node n holds the pre-collision f_i(n)
+  swapped,  // slot i of node n holds the post-collision f*_opp(i)(n): the optimised (AA) kernel's
+            // state between its local and its streaming step
+};
+
+struct FluidArrays {
+  explicit FluidArrays(std::size_t node_count);
+
+  // Structure of arrays: population i of node n at populations[i * node_count + n].
+  std::vector<double> populations;
+  PopulationLayout layout = PopulationLayout::natural;
+  // Density and velocity u = (sum_i f_i c_i + F/2) / rho of the latest collision at each fluid
+  // node (Guo et al. 2002); F is the force density of that step (field plus body force).
+  std::vector<double> density;
+  VectorField velocity;
+  // Force density per node (for instance spread from membranes by the IBM).
+  VectorField force_density;
+};
+
+// What a run keeps fixed: the box, its boundaries, and the optional Lees-Edwards plane.
+struct LatticeSetup {
+  LatticeGrid grid;
+  BoundaryMap boundaries;
+  // Velocity difference U between the image above and the box; no value: plain periodic in y.
+  std::optional<double> lees_edwards_velocity;
+};
+
+struct StepParameters {
+  RelaxationRates rates;
+  std::array<double, 3> body_force = {0.0, 0.0, 0.0};  // uniform force density
+  bool force_field_active = false;  // false: FluidArrays::force_density is zero and not read
+  std::size_t time = 0;             // steps completed before this one
+};
+
+class FluidKernel {
+ public:
+  virtual ~FluidKernel() = default;
+  virtual void step(FluidArrays& arrays, const StepParameters& parameters) = 0;
+};
+
+struct FluidKernelEntry {
+  std::string_view name;
+  std::string_view summary;
+  std::unique_ptr<FluidKernel> (*make)(const LatticeSetup& setup);
+};
+
+std::span<const FluidKernelEntry> fluid_kernels();
+
+// The entry of the named kernel. Throws rbcsim::InputError naming `lattice.kernel` for an
+// unknown name.
+const FluidKernelEntry& find_fluid_kernel(std::string_view name);
+
+// Checks that `setup` suits every kernel (rbcsim::InputError naming `lattice.lees_edwards` when a
+// sliding plane holds non-fluid nodes) and makes the named kernel. The kernel keeps a reference
+// to `setup`, which must outlive it.
+std::unique_ptr<FluidKernel> make_fluid_kernel(std::string_view name, const LatticeSetup& setup);
+
+// The pre-collision populations in natural layout, whichever layout `arrays` holds. `time` is the
+// number of steps completed (it sets the Lees-Edwards offset of a pending stream).
+std::vector<double> pre_collision_populations(const LatticeSetup& setup, const FluidArrays& arrays,
+                                              std::size_t time);
+
+}  // namespace rbcsim::lattice

@@ -1,0 +1,261 @@
+#include "lattice/fluid_solver.hpp"
+
+#include "common/errors.hpp"
+#include "lattice/lees_edwards.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace rbcsim::lattice {
+
+FluidSolver::FluidSolver(LatticeGrid grid, FluidParameters parameters)
+    : setup_{grid, BoundaryMap(grid.node_count()), parameters.lees_edwards_velocity},
+      parameters_(std::move(parameters)),
+      rates_(lattice::relaxation_rates(parameters_.collision, parameters_.collision_parameters)),
+      arrays_(grid.node_count()) {
+  find_fluid_kernel(parameters_.kernel);
+  initialise_equilibrium(1.0, {0.0, 0.0, 0.0});
+}
+
+FluidSolver::~FluidSolver() = default;
+
+void FluidSolver::require_geometry_editable() const {
+  if (kernel_) {
+    throw std::logic_error("lattice: the geometry is fixed once the fluid has stepped");
+  }
+}
+
+void FluidSolver::mark_boundary_node(std::size_t node) {
+  const auto wall_velocity = setup_.boundaries.wall_velocity(node);
+  arrays_.density[node] = 0.0;
+  for (int axis = 0; axis < 3; ++axis) {
+    arrays_.velocity[axis][node] = wall_velocity[axis];
+  }
+}
+
+void FluidSolver::set_wall(std::size_t node, const std::array<double, 3>& wall_velocity) {
+  require_geometry_editable();
+  setup_.boundaries.set_wall(node, wall_velocity);
+  mark_boundary_node(node);
+}
+
+void FluidSolver::set_velocity_inlet(std::size_t node, const std::array<double, 3>& velocity) {
+  set_wall(node, velocity);
+}
+
+void FluidSolver::set_pressure_outlet(std::size_t node, double density) {
+  require_geometry_editable();
+  setup_.boundaries.set_pressure_outlet(node, density);
+  mark_boundary_node(node);
+}
+
+void FluidSolver::initialise_equilibrium(double density, const std::array<double, 3>& velocity) {
+  const std::size_t node_count = grid().node_count();
+  initialise_equilibrium(
+      std::vector<double>(node_count, density),
+      {std::vector<double>(node_count, velocity[0]), std::vector<double>(node_count, velocity[1]),
+       std::vector<double>(node_count, velocity[2])});
+}
+
+void FluidSolver::initialise_equilibrium(const std::vector<double>& density,
+                                         const VectorField& velocity) {
+  const std::size_t node_count = grid().node_count();
+  if (density.size() != node_count || velocity[0].size() != node_count ||
+      velocity[1].size() != node_count || velocity[2].size() != node_count) {
+    throw std::invalid_argument("lattice: initial fields must have one value per node");
+  }
+  for (std::size_t node = 0; node < node_count; ++node) {
+    if (!setup_.boundaries.is_fluid(node)) {
+      mark_boundary_node(node);
+      continue;
+    }
+    const std::array<double, 3> u = {velocity[0][node], velocity[1][node], velocity[2][node]};
+    for (int i = 0; i < kDirections; ++i) {
+      arrays_.populations[i * node_count + node] = equilibrium(i, density[node], u);
+    }
+    arrays_.density[node] = density[node];
+    for (int axis = 0; axis < 3; ++axis) {
+      arrays_.velocity[axis][node] = u[axis];
+    }
+  }
+  arrays_.layout = PopulationLayout::natural;
+}
+
+void FluidSolver::initialise_populations(const std::vector<double>& populations) {
+  const std::size_t node_count = grid().node_count();
+  if (populations.size() != kDirections * node_count) {
+    throw std::invalid_argument("lattice: initial populations must have 19 values per node");
+  }
+  arrays_.populations = populations;
+  arrays_.layout = PopulationLayout::natural;
+  for (std::size_t node = 0; node < node_count; ++node) {
+    if (!setup_.boundaries.is_fluid(node)) {
+      mark_boundary_node(node);
+      continue;
+    }
+    double density = 0.0;
+    std::array<double, 3> momentum = parameters_.body_force;
+    for (int axis = 0; axis < 3; ++axis) {
+      momentum[axis] = 0.5 * (momentum[axis] + arrays_.force_density[axis][node]);
+    }
+    for (int i = 0; i < kDirections; ++i) {
+      const double f = populations[i * node_count + node];
+      density += f;
+      for (int axis = 0; axis < 3; ++axis) {
+        momentum[axis] += f * kVelocities[i][axis];
+      }
+    }
+    arrays_.density[node] = density;
+    for (int axis = 0; axis < 3; ++axis) {
+      arrays_.velocity[axis][node] = momentum[axis] / density;
+    }
+  }
+}
+
+VectorField& FluidSolver::force_density() {
+  // Once handed out, the field is read and zeroed every step: the caller may keep the reference.
+  force_field_active_ = true;
+  return arrays_.force_density;
+}
+
+void FluidSolver::ensure_kernel() {
+  if (!kernel_) {
+    kernel_ = make_fluid_kernel(parameters_.kernel, setup_);
+  }
+}
+
+void FluidSolver::step() {
+  ensure_kernel();
+  kernel_->step(arrays_, {rates_, parameters_.body_force, force_field_active_, time_});
+  ++time_;
+  if (force_field_active_) {
+    for (auto& component : arrays_.force_density) {
+      const auto count = static_cast<std::int64_t>(component.size());
+      double* const values = component.data();
+#pragma omp parallel for schedule(static) if (grid().worth_threads())
+      for (std::int64_t node = 0; node < count; ++node) {
+        values[node] = 0.0;
+      }
+    }
+  }
+}
+
+void FluidSolver::advance(std::size_t steps) {
+  for (std::size_t s = 0; s < steps; ++s) {
+    step();
+  }
+}
+
+SteadyStateResult FluidSolver::run_to_steady_state(const SteadyStateCriterion& criterion) {
+  const auto node_count = static_cast<std::int64_t>(grid().node_count());
+  const auto& kinds = setup_.boundaries.kinds();
+  VectorField previous = arrays_.velocity;
+  SteadyStateResult result;
+  while (result.steps < criterion.max_steps) {
+    const std::size_t chunk =
+        std::min(criterion.check_interval, criterion.max_steps - result.steps);
+    advance(chunk);
+    result.steps += chunk;
+    require_finite_velocity();
+    double largest_change_squared = 0.0;
+    double largest_speed_squared = 0.0;
+#pragma omp parallel for schedule(static) if (grid().worth_threads()) \
+    reduction(max                                                     \
+              : largest_change_squared, largest_speed_squared)
+    for (std::int64_t node = 0; node < node_count; ++node) {
+      if (kinds[node] != 0) {
+        continue;
+      }
+      double change_squared = 0.0;
+      double speed_squared = 0.0;
+      for (int axis = 0; axis < 3; ++axis) {
+        const double u = arrays_.velocity[axis][node];
+        change_squared += (u - previous[axis][node]) * (u - previous[axis][node]);
+        speed_squared += u * u;
+        previous[axis][node] = u;
+      }
+      largest_change_squared = std::max(largest_change_squared, change_squared);
+      largest_speed_squared = std::max(largest_speed_squared, speed_squared);
+    }
+    const double change = std::sqrt(largest_change_squared);
+    const double speed = std::sqrt(largest_speed_squared);
+    result.relative_velocity_change =
+        speed > 0.0 ? change / speed
+                    : (change > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+    if (result.relative_velocity_change <= criterion.relative_velocity_change) {
+      result.converged = true;
+      break;
+    }
+  }
+  return result;
+}
+
+void FluidSolver::require_finite_velocity() const {
+  const auto node_count = static_cast<std::int64_t>(grid().node_count());
+  const auto& kinds = setup_.boundaries.kinds();
+  std::int64_t first_bad = node_count;
+#pragma omp parallel for schedule(static) if (grid().worth_threads()) reduction(min : first_bad)
+  for (std::int64_t node = 0; node < node_count; ++node) {
+    if (kinds[node] == 0 &&
+        !(std::isfinite(arrays_.velocity[0][node]) && std::isfinite(arrays_.velocity[1][node]) &&
+          std::isfinite(arrays_.velocity[2][node]))) {
+      first_bad = std::min(first_bad, node);
+    }
+  }
+  if (first_bad < node_count) {
+    const auto [x, y, z] = grid().coordinates(static_cast<std::size_t>(first_bad));
+    throw RuntimeFailure("lattice: non-finite fluid velocity at node (" + std::to_string(x) + ", " +
+                         std::to_string(y) + ", " + std::to_string(z) + ") after step " +
+                         std::to_string(time_) +
+                         "; the flow is unstable (lattice velocity too high or tau too close "
+                         "to 1/2)");
+  }
+}
+
+double FluidSolver::viscosity() const { return (1.0 / rates_.even - 0.5) * kSoundSpeedSquared; }
+
+double FluidSolver::lees_edwards_offset() const {
+  return setup_.lees_edwards_velocity
+             ? lattice::lees_edwards_offset(*setup_.lees_edwards_velocity, time_, grid().nx())
+             : 0.0;
+}
+
+std::array<double, 3> FluidSolver::velocity_at(std::size_t node) const {
+  return {arrays_.velocity[0][node], arrays_.velocity[1][node], arrays_.velocity[2][node]};
+}
+
+double FluidSolver::total_mass() const {
+  const LatticeGrid& g = grid();
+  const std::size_t node_count = g.node_count();
+  const auto rows = static_cast<std::int64_t>(g.row_count());
+  std::vector<double> row_mass(g.row_count(), 0.0);
+#pragma omp parallel for schedule(static) if (grid().worth_threads())
+  for (std::int64_t row = 0; row < rows; ++row) {
+    const std::size_t row_start = static_cast<std::size_t>(row) * g.nx();
+    double mass = 0.0;
+    for (std::size_t node = row_start; node < row_start + g.nx(); ++node) {
+      if (!setup_.boundaries.is_fluid(node)) {
+        continue;
+      }
+      for (int i = 0; i < kDirections; ++i) {
+        mass += arrays_.populations[i * node_count + node];
+      }
+    }
+    row_mass[row] = mass;
+  }
+  double total = 0.0;
+  for (const double mass : row_mass) {
+    total += mass;
+  }
+  return total;
+}
+
+std::vector<double> FluidSolver::pre_collision_populations() const {
+  return lattice::pre_collision_populations(setup_, arrays_, time_);
+}
+
+}  // namespace rbcsim::lattice

@@ -1,0 +1,119 @@
+// The lattice Boltzmann fluid driver: owns the arrays, composes collision, boundaries and forcing,
+// and advances them with the kernel chosen by name. Everything is in lattice units (dx = dt = 1,
+// rho ~ 1); core/units converts from SI.
+//
+// One step at time t: collide with the force density F(t) = force field + body force, stream.
+// Afterwards density() and velocity() hold rho(t) and u(t) = (sum_i f_i c_i + F(t)/2) / rho(t) of
+// that collision (Guo forcing): the velocity the immersed boundary interpolates after spreading
+// F(t). The force field is zeroed after every step, ready for the next spread. Results do not
+// depend on the number of OpenMP threads: every kernel gives each node to exactly one thread and
+// reductions are order-independent (max) or summed in a fixed order.
+#pragma once
+
+#include "lattice/collision.hpp"
+#include "lattice/fluid_kernel.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace rbcsim::lattice {
+
+struct FluidParameters {
+  std::string collision = "trt";  // a name from collision_models()
+  CollisionParameters collision_parameters;
+  std::array<double, 3> body_force = {0.0, 0.0, 0.0};  // uniform force density
+  // Lees-Edwards sliding periodic boundary in y with this velocity difference U between the image
+  // above and the box (shear rate U / ny); empty: plain periodic.
+  std::optional<double> lees_edwards_velocity;
+  std::string kernel = "optimised";  // a name from fluid_kernels()
+};
+
+struct SteadyStateCriterion {
+  // Converged when, over one check interval, max_node |u(t) - u(t - interval)| is at most this
+  // fraction of max_node |u(t)|.
+  double relative_velocity_change = 1e-6;
+  std::size_t check_interval = 100;
+  std::size_t max_steps = 100000;
+};
+
+struct SteadyStateResult {
+  bool converged = false;
+  std::size_t steps = 0;  // steps taken by this call
+  double relative_velocity_change = 0.0;
+};
+
+class FluidSolver {
+ public:
+  // Starts at rest at density 1, every node fluid. Throws rbcsim::InputError for an unknown
+  // collision model or kernel, or bad collision parameters.
+  FluidSolver(LatticeGrid grid, FluidParameters parameters);
+  ~FluidSolver();
+  FluidSolver(const FluidSolver&) = delete;
+  FluidSolver& operator=(const FluidSolver&) = delete;
+
+  // Geometry, before the first step (later calls throw std::logic_error). Non-fluid nodes report
+  // density 0 and their wall velocity.
+  void set_wall(std::size_t node, const std::array<double, 3>& wall_velocity = {0.0, 0.0, 0.0});
+  // The bounce-back-with-velocity inlet: a wall node moving at the inflow velocity of that node.
+  void set_velocity_inlet(std::size_t node, const std::array<double, 3>& velocity);
+  void set_pressure_outlet(std::size_t node, double density);
+  const BoundaryMap& boundaries() const { return setup_.boundaries; }
+  const std::vector<std::uint8_t>& solid_mask() const { return setup_.boundaries.kinds(); }
+
+  // Equilibrium populations at the fluid nodes; sets density and velocity accordingly.
+  void initialise_equilibrium(double density, const std::array<double, 3>& velocity);
+  void initialise_equilibrium(const std::vector<double>& density, const VectorField& velocity);
+  // Pre-collision populations in natural layout (kDirections * node_count values, see
+  // FluidArrays); density and velocity become their moments with the body force.
+  void initialise_populations(const std::vector<double>& populations);
+
+  // The force density field: add to it before step(). Taking it by non-const reference makes the
+  // next step read it.
+  VectorField& force_density();
+  const VectorField& force_density() const { return arrays_.force_density; }
+
+  void step();
+  void advance(std::size_t steps);
+  // Steps until the criterion holds or max_steps were taken. Throws rbcsim::RuntimeFailure on a
+  // non-finite velocity, naming the step and the node.
+  SteadyStateResult run_to_steady_state(const SteadyStateCriterion& criterion);
+  // Throws rbcsim::RuntimeFailure, naming the step and the node, if a fluid node's velocity is
+  // not finite (the flow went unstable).
+  void require_finite_velocity() const;
+
+  const LatticeGrid& grid() const { return setup_.grid; }
+  const FluidParameters& parameters() const { return parameters_; }
+  RelaxationRates relaxation_rates() const { return rates_; }
+  // Kinematic viscosity (1/omega_even - 1/2) / 3.
+  double viscosity() const;
+  std::size_t time() const { return time_; }
+  double lees_edwards_offset() const;
+
+  const std::vector<double>& density() const { return arrays_.density; }
+  const VectorField& velocity() const { return arrays_.velocity; }
+  std::array<double, 3> velocity_at(std::size_t node) const;
+  // Sum of all populations of the fluid nodes, independent of the thread count.
+  double total_mass() const;
+  // Pre-collision populations in natural layout, whatever the kernel's current layout.
+  std::vector<double> pre_collision_populations() const;
+
+ private:
+  void require_geometry_editable() const;
+  void mark_boundary_node(std::size_t node);
+  void ensure_kernel();
+
+  LatticeSetup setup_;
+  FluidParameters parameters_;
+  RelaxationRates rates_;
+  FluidArrays arrays_;
+  std::unique_ptr<FluidKernel> kernel_;
+  bool force_field_active_ = false;
+  std::size_t time_ = 0;
+};
+
+}  // namespace rbcsim::lattice

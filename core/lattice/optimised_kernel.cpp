@@ -1,0 +1,461 @@
+#include "lattice/optimised_kernel.hpp"
+
+#include "lattice/lees_edwards.hpp"
+
+#include <array>
+#include <cstddef>
+
+// The bulk loop is compiled for the baseline x86-64 and for AVX2 and AVX-512 machines; the loader
+// picks the best clone the CPU supports, so the binary stays portable (about 2.5x faster on an
+// AVX-512 Xeon than the SSE2 baseline).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define RBCSIM_VECTOR_CLONES \
+  __attribute__((target_clones("default", "arch=x86-64-v3", "arch=x86-64-v4")))
+#else
+#define RBCSIM_VECTOR_CLONES
+#endif
+
+namespace rbcsim::lattice {
+namespace {
+
+struct TrtConstants {
+  explicit TrtConstants(const RelaxationRates& rates)
+      : omega_even(rates.even),
+        omega_odd(rates.odd),
+        source_even(1.0 - 0.5 * rates.even),
+        source_odd(1.0 - 0.5 * rates.odd) {}
+  double omega_even;
+  double omega_odd;
+  double source_even;  // Guo prefactor of the even part of the forcing term, 1 - omega+/2
+  double source_odd;
+};
+
+struct Moments {
+  double density;
+  double ux;
+  double uy;
+  double uz;
+};
+
+// TRT relaxation of one pair of opposite populations, `along` c and `against` it, with
+// cu = c.u, cf = c.F, base = 1 - u.u/(2 c_s^2), three_uf = u.F / c_s^2. Same operator as
+// collide_node_reference, written for the pair at once.
+[[gnu::always_inline]] inline void relax_pair(double& along, double& against, double weight,
+                                              double cu, double cf, double density, double base,
+                                              double three_uf, const TrtConstants& k) {
+  const double equilibrium_even = weight * density * (base + 4.5 * cu * cu);
+  const double equilibrium_odd = weight * density * 3.0 * cu;
+  const double source_even = weight * (9.0 * cu * cf - three_uf);
+  const double source_odd = weight * 3.0 * cf;
+  const double change_even =
+      k.source_even * source_even - k.omega_even * (0.5 * (along + against) - equilibrium_even);
+  const double change_odd =
+      k.source_odd * source_odd - k.omega_odd * (0.5 * (along - against) - equilibrium_odd);
+  along += change_even + change_odd;
+  against += change_even - change_odd;
+}
+
+// Collides one node in place, the 19 directions written out (pairs as in d3q19.hpp).
+[[gnu::always_inline]] inline Moments collide_written_out(double (&f)[kDirections], double fx,
+                                                          double fy, double fz,
+                                                          const TrtConstants& k) {
+  const double density = f[0] + f[1] + f[2] + f[3] + f[4] + f[5] + f[6] + f[7] + f[8] + f[9] +
+                         f[10] + f[11] + f[12] + f[13] + f[14] + f[15] + f[16] + f[17] + f[18];
+  const double jx = f[1] - f[2] + f[7] - f[8] + f[9] - f[10] + f[11] - f[12] + f[13] - f[14];
+  const double jy = f[3] - f[4] + f[7] - f[8] - f[9] + f[10] + f[15] - f[16] + f[17] - f[18];
+  const double jz = f[5] - f[6] + f[11] - f[12] - f[13] + f[14] + f[15] - f[16] - f[17] + f[18];
+  const double inverse_density = 1.0 / density;
+  const double ux = (jx + 0.5 * fx) * inverse_density;
+  const double uy = (jy + 0.5 * fy) * inverse_density;
+  const double uz = (jz + 0.5 * fz) * inverse_density;
+  const double base = 1.0 - 1.5 * (ux * ux + uy * uy + uz * uz);
+  const double three_uf = 3.0 * (ux * fx + uy * fy + uz * fz);
+
+  f[0] += k.source_even * (-kWeightRest * three_uf) -
+          k.omega_even * (f[0] - kWeightRest * density * base);
+  relax_pair(f[1], f[2], kWeightFace, ux, fx, density, base, three_uf, k);
+  relax_pair(f[3], f[4], kWeightFace, uy, fy, density, base, three_uf, k);
+  relax_pair(f[5], f[6], kWeightFace, uz, fz, density, base, three_uf, k);
+  relax_pair(f[7], f[8], kWeightEdge, ux + uy, fx + fy, density, base, three_uf, k);
+  relax_pair(f[9], f[10], kWeightEdge, ux - uy, fx - fy, density, base, three_uf, k);
+  relax_pair(f[11], f[12], kWeightEdge, ux + uz, fx + fz, density, base, three_uf, k);
+  relax_pair(f[13], f[14], kWeightEdge, ux - uz, fx - fz, density, base, three_uf, k);
+  relax_pair(f[15], f[16], kWeightEdge, uy + uz, fy + fz, density, base, three_uf, k);
+  relax_pair(f[17], f[18], kWeightEdge, uy - uz, fy - fz, density, base, three_uf, k);
+  return {density, ux, uy, uz};
+}
+
+// Collides `length` consecutive nodes starting at grid index `first`. Node k reads f_i from
+// p[i][k] and writes f*_i to p[opp(i)][k]: with p[i] at slot i of the node itself this is the AA
+// local step, with p[i] at slot opp(i) of the node x - c_i the streaming step. Every slot is read
+// and written by one node only, so iterations are independent: `ivdep` says so to the vectoriser
+// (GCC 12 does not vectorise this loop under `omp simd`, which privatises the array f into a simd
+// array it cannot load from).
+template <bool kForceField>
+RBCSIM_VECTOR_CLONES void collide_run(double* const (&p)[kDirections], std::size_t first,
+                                      std::ptrdiff_t length, FluidArrays& arrays,
+                                      const std::array<double, 3>& body_force,
+                                      const TrtConstants& k) {
+  double* const p0 = p[0];
+  double* const p1 = p[1];
+  double* const p2 = p[2];
+  double* const p3 = p[3];
+  double* const p4 = p[4];
+  double* const p5 = p[5];
+  double* const p6 = p[6];
+  double* const p7 = p[7];
+  double* const p8 = p[8];
+  double* const p9 = p[9];
+  double* const p10 = p[10];
+  double* const p11 = p[11];
+  double* const p12 = p[12];
+  double* const p13 = p[13];
+  double* const p14 = p[14];
+  double* const p15 = p[15];
+  double* const p16 = p[16];
+  double* const p17 = p[17];
+  double* const p18 = p[18];
+  double* const density = arrays.density.data() + first;
+  double* const ux = arrays.velocity[0].data() + first;
+  double* const uy = arrays.velocity[1].data() + first;
+  double* const uz = arrays.velocity[2].data() + first;
+  const double* const force_x = arrays.force_density[0].data() + first;
+  const double* const force_y = arrays.force_density[1].data() + first;
+  const double* const force_z = arrays.force_density[2].data() + first;
+  const double body_x = body_force[0];
+  const double body_y = body_force[1];
+  const double body_z = body_force[2];
+
+#pragma GCC ivdep
+  for (std::ptrdiff_t n = 0; n < length; ++n) {
+    double f[kDirections] = {p0[n],  p1[n],  p2[n],  p3[n],  p4[n],  p5[n],  p6[n],
+                             p7[n],  p8[n],  p9[n],  p10[n], p11[n], p12[n], p13[n],
+                             p14[n], p15[n], p16[n], p17[n], p18[n]};
+    double fx = body_x;
+    double fy = body_y;
+    double fz = body_z;
+    if constexpr (kForceField) {
+      fx += force_x[n];
+      fy += force_y[n];
+      fz += force_z[n];
+    }
+    const Moments moments = collide_written_out(f, fx, fy, fz, k);
+    density[n] = moments.density;
+    ux[n] = moments.ux;
+    uy[n] = moments.uy;
+    uz[n] = moments.uz;
+    p0[n] = f[0];
+    p2[n] = f[1];
+    p1[n] = f[2];
+    p4[n] = f[3];
+    p3[n] = f[4];
+    p6[n] = f[5];
+    p5[n] = f[6];
+    p8[n] = f[7];
+    p7[n] = f[8];
+    p10[n] = f[9];
+    p9[n] = f[10];
+    p12[n] = f[11];
+    p11[n] = f[12];
+    p14[n] = f[13];
+    p13[n] = f[14];
+    p16[n] = f[15];
+    p15[n] = f[16];
+    p18[n] = f[17];
+    p17[n] = f[18];
+  }
+}
+
+using LinkKind = OptimisedKernel::LinkKind;
+using LinkedNode = OptimisedKernel::LinkedNode;
+using Run = OptimisedKernel::Run;
+
+// The streaming step of one node with boundary links: gather through each link, collide, scatter
+// through each link (the write of f*_i goes through link opp(i), whose source is x + c_i).
+template <bool kForceField>
+void collide_linked_node(const LinkedNode& linked, std::size_t node_count, FluidArrays& arrays,
+                         const double* ghost_in, double* ghost_out,
+                         const std::array<double, 3>& body_force, const TrtConstants& k) {
+  double* const populations = arrays.populations.data();
+  const std::size_t node = linked.node;
+  const double old_density = arrays.density[node];
+  const std::array<double, 3> old_velocity = {arrays.velocity[0][node], arrays.velocity[1][node],
+                                              arrays.velocity[2][node]};
+  double f[kDirections];
+  for (int i = 0; i < kDirections; ++i) {
+    switch (static_cast<LinkKind>(linked.kind[i])) {
+      case LinkKind::fluid:
+        f[i] = populations[kOpposite[i] * node_count + linked.source[i]];
+        break;
+      case LinkKind::wall:
+        f[i] = bounce_back(populations[i * node_count + node], old_density, linked.value[i]);
+        break;
+      case LinkKind::pressure_outlet:
+        f[i] =
+            anti_bounce_back(i, populations[i * node_count + node], linked.value[i], old_velocity);
+        break;
+      case LinkKind::lees_edwards:
+        f[i] = ghost_in[linked.source[i]];
+        break;
+    }
+  }
+  std::array<double, 3> force = body_force;
+  if constexpr (kForceField) {
+    for (int axis = 0; axis < 3; ++axis) {
+      force[axis] += arrays.force_density[axis][node];
+    }
+  }
+  const Moments moments = collide_written_out(f, force[0], force[1], force[2], k);
+  arrays.density[node] = moments.density;
+  arrays.velocity[0][node] = moments.ux;
+  arrays.velocity[1][node] = moments.uy;
+  arrays.velocity[2][node] = moments.uz;
+  const std::array<double, 3> velocity = {moments.ux, moments.uy, moments.uz};
+  for (int i = 0; i < kDirections; ++i) {
+    const int o = kOpposite[i];
+    switch (static_cast<LinkKind>(linked.kind[o])) {
+      case LinkKind::fluid:
+        populations[i * node_count + linked.source[o]] = f[i];
+        break;
+      case LinkKind::wall:
+        populations[o * node_count + node] = bounce_back(f[i], moments.density, linked.value[o]);
+        break;
+      case LinkKind::pressure_outlet:
+        populations[o * node_count + node] = anti_bounce_back(o, f[i], linked.value[o], velocity);
+        break;
+      case LinkKind::lees_edwards:
+        ghost_out[linked.source[o]] = f[i];
+        break;
+    }
+  }
+}
+
+// Fills `linked` for a fluid node; returns false when every link is plain periodic fluid.
+bool link_node(const LatticeSetup& setup, std::size_t node, std::size_t plane_size,
+               LinkedNode& linked) {
+  const LatticeGrid& grid = setup.grid;
+  const auto [x, y, z] = grid.coordinates(node);
+  const std::size_t plane_position = x + static_cast<std::size_t>(grid.nx()) * z;
+  bool needs_links = false;
+  linked.node = node;
+  for (int i = 0; i < kDirections; ++i) {
+    const auto& c = kVelocities[i];
+    const int source_y = y - c[1];
+    linked.value[i] = 0.0;
+    if (setup.lees_edwards_velocity && (source_y < 0 || source_y >= grid.ny())) {
+      linked.kind[i] = static_cast<std::uint8_t>(LinkKind::lees_edwards);
+      linked.source[i] = i * plane_size + plane_position;
+      needs_links = true;
+      continue;
+    }
+    const std::size_t source = grid.periodic_neighbour(node, {-c[0], -c[1], -c[2]});
+    linked.source[i] = source;
+    switch (setup.boundaries.kind(source)) {
+      case NodeKind::fluid:
+        linked.kind[i] = static_cast<std::uint8_t>(LinkKind::fluid);
+        break;
+      case NodeKind::wall:
+        linked.kind[i] = static_cast<std::uint8_t>(LinkKind::wall);
+        linked.value[i] = wall_momentum_coefficient(i, setup.boundaries.wall_velocity(source));
+        needs_links = true;
+        break;
+      case NodeKind::pressure_outlet:
+        linked.kind[i] = static_cast<std::uint8_t>(LinkKind::pressure_outlet);
+        linked.value[i] = setup.boundaries.outlet_density(source);
+        needs_links = true;
+        break;
+    }
+  }
+  return needs_links;
+}
+
+// Appends the maximal runs of members along a row; with `split_at_wrap` a run never straddles
+// x = 1 or x = nx - 1, so that its neighbours along x are one pointer offset away.
+void append_runs(const std::vector<char>& member, bool split_at_wrap, std::vector<Run>& runs) {
+  const int nx = static_cast<int>(member.size());
+  int begin = -1;
+  for (int x = 0; x <= nx; ++x) {
+    const bool inside = x < nx && member[x] != 0;
+    const bool split = split_at_wrap && (x == 1 || x == nx - 1);
+    if (begin >= 0 && (!inside || split)) {
+      runs.push_back({begin, x});
+      begin = -1;
+    }
+    if (inside && begin < 0) {
+      begin = x;
+    }
+  }
+}
+
+// Computes every population entering through a sliding plane at `arrival_time` and hands it to
+// store(i, target node, x, z, value); post_collision(i, node) returns f*_i of a source node.
+template <class PostCollision, class Store>
+void for_each_lees_edwards_population(const LatticeSetup& setup, const FluidArrays& arrays,
+                                      std::size_t arrival_time, PostCollision&& post_collision,
+                                      Store&& store) {
+  const LatticeGrid& grid = setup.grid;
+  const double velocity_difference = *setup.lees_edwards_velocity;
+  const auto planes = lees_edwards_planes(
+      grid.ny(), lees_edwards_offset(velocity_difference, arrival_time, grid.nx()),
+      velocity_difference);
+#pragma omp parallel for schedule(static) if (grid.worth_threads())
+  for (int z = 0; z < grid.nz(); ++z) {
+    for (const auto& plane : planes) {
+      for (int i = 1; i < kDirections; ++i) {
+        if (kVelocities[i][1] != plane.entering_cy) {
+          continue;
+        }
+        for (int x = 0; x < grid.nx(); ++x) {
+          const double value = lees_edwards_population(
+              grid, plane, i, x, z, arrays,
+              [&](std::size_t source) { return post_collision(i, source); });
+          store(i, grid.index(x, plane.target_y, z), x, z, value);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+
+OptimisedKernel::OptimisedKernel(const LatticeSetup& setup)
+    : setup_(setup),
+      plane_size_(static_cast<std::size_t>(setup.grid.nx()) * setup.grid.nz()),
+      fluid_run_begin_{0},
+      bulk_run_begin_{0},
+      linked_begin_{0} {
+  const LatticeGrid& grid = setup.grid;
+  std::vector<char> fluid(grid.nx());
+  std::vector<char> bulk(grid.nx());
+  LinkedNode linked;
+  for (int z = 0; z < grid.nz(); ++z) {
+    for (int y = 0; y < grid.ny(); ++y) {
+      for (int x = 0; x < grid.nx(); ++x) {
+        const std::size_t node = grid.index(x, y, z);
+        fluid[x] = setup.boundaries.is_fluid(node);
+        const bool has_links = fluid[x] && link_node(setup, node, plane_size_, linked);
+        bulk[x] = fluid[x] && !has_links;
+        if (has_links) {
+          linked_nodes_.push_back(linked);
+        }
+      }
+      append_runs(fluid, false, fluid_runs_);
+      append_runs(bulk, true, bulk_runs_);
+      fluid_run_begin_.push_back(fluid_runs_.size());
+      bulk_run_begin_.push_back(bulk_runs_.size());
+      linked_begin_.push_back(linked_nodes_.size());
+    }
+  }
+  if (setup.lees_edwards_velocity) {
+    ghost_in_.assign(kDirections * plane_size_, 0.0);
+    ghost_out_.assign(kDirections * plane_size_, 0.0);
+  }
+}
+
+void OptimisedKernel::step(FluidArrays& arrays, const StepParameters& parameters) {
+  const bool local = arrays.layout == PopulationLayout::natural;
+  if (local && parameters.force_field_active) {
+    local_step<true>(arrays, parameters);
+  } else if (local) {
+    local_step<false>(arrays, parameters);
+  } else if (parameters.force_field_active) {
+    streaming_step<true>(arrays, parameters);
+  } else {
+    streaming_step<false>(arrays, parameters);
+  }
+}
+
+template <bool kForceField>
+void OptimisedKernel::local_step(FluidArrays& arrays, const StepParameters& parameters) const {
+  const LatticeGrid& grid = setup_.grid;
+  const std::size_t node_count = grid.node_count();
+  const TrtConstants constants(parameters.rates);
+  double* const populations = arrays.populations.data();
+  const auto rows = static_cast<std::int64_t>(grid.row_count());
+#pragma omp parallel for schedule(static) if (grid.worth_threads())
+  for (std::int64_t row = 0; row < rows; ++row) {
+    const std::size_t row_start = static_cast<std::size_t>(row) * grid.nx();
+    for (std::size_t r = fluid_run_begin_[row]; r < fluid_run_begin_[row + 1]; ++r) {
+      const Run run = fluid_runs_[r];
+      const std::size_t first = row_start + run.x_begin;
+      double* p[kDirections];
+      for (int i = 0; i < kDirections; ++i) {
+        p[i] = populations + i * node_count + first;
+      }
+      collide_run<kForceField>(p, first, run.x_end - run.x_begin, arrays, parameters.body_force,
+                               constants);
+    }
+  }
+  arrays.layout = PopulationLayout::swapped;
+}
+
+template <bool kForceField>
+void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& parameters) {
+  const LatticeGrid& grid = setup_.grid;
+  const std::size_t node_count = grid.node_count();
+  const TrtConstants constants(parameters.rates);
+  double* const populations = arrays.populations.data();
+  if (setup_.lees_edwards_velocity) {
+    fill_lees_edwards_ghosts(arrays, parameters.time);
+  }
+  const auto rows = static_cast<std::int64_t>(grid.row_count());
+#pragma omp parallel for schedule(static) if (grid.worth_threads())
+  for (std::int64_t row = 0; row < rows; ++row) {
+    const int y = static_cast<int>(row % grid.ny());
+    const int z = static_cast<int>(row / grid.ny());
+    const std::size_t row_start = static_cast<std::size_t>(row) * grid.nx();
+    for (std::size_t r = bulk_run_begin_[row]; r < bulk_run_begin_[row + 1]; ++r) {
+      const Run run = bulk_runs_[r];
+      double* p[kDirections];
+      for (int i = 0; i < kDirections; ++i) {
+        const auto& c = kVelocities[i];
+        p[i] = populations + kOpposite[i] * node_count +
+               grid.index(LatticeGrid::wrap(run.x_begin - c[0], grid.nx()),
+                          LatticeGrid::wrap(y - c[1], grid.ny()),
+                          LatticeGrid::wrap(z - c[2], grid.nz()));
+      }
+      collide_run<kForceField>(p, row_start + run.x_begin, run.x_end - run.x_begin, arrays,
+                               parameters.body_force, constants);
+    }
+    for (std::size_t l = linked_begin_[row]; l < linked_begin_[row + 1]; ++l) {
+      collide_linked_node<kForceField>(linked_nodes_[l], node_count, arrays, ghost_in_.data(),
+                                       ghost_out_.data(), parameters.body_force, constants);
+    }
+  }
+  if (setup_.lees_edwards_velocity) {
+    empty_lees_edwards_ghosts(arrays, parameters.time + 1);
+  }
+  arrays.layout = PopulationLayout::natural;
+}
+
+void OptimisedKernel::fill_lees_edwards_ghosts(const FluidArrays& arrays,
+                                               std::size_t arrival_time) {
+  const std::size_t node_count = setup_.grid.node_count();
+  const auto nx = static_cast<std::size_t>(setup_.grid.nx());
+  for_each_lees_edwards_population(
+      setup_, arrays, arrival_time,
+      // After the local step, f*_i of a node sits in its slot opp(i).
+      [&](int i, std::size_t source) {
+        return arrays.populations[kOpposite[i] * node_count + source];
+      },
+      [&](int i, std::size_t, int x, int z, double value) {
+        ghost_in_[i * plane_size_ + x + nx * z] = value;
+      });
+}
+
+void OptimisedKernel::empty_lees_edwards_ghosts(FluidArrays& arrays,
+                                                std::size_t arrival_time) const {
+  const std::size_t node_count = setup_.grid.node_count();
+  const auto nx = static_cast<std::size_t>(setup_.grid.nx());
+  const std::size_t layer = nx * setup_.grid.ny();
+  for_each_lees_edwards_population(
+      setup_, arrays, arrival_time,
+      [&](int i, std::size_t source) {
+        return ghost_out_[kOpposite[i] * plane_size_ + source % nx + nx * (source / layer)];
+      },
+      [&](int i, std::size_t target, int, int, double value) {
+        arrays.populations[i * node_count + target] = value;
+      });
+}
+
+}  // namespace rbcsim::lattice

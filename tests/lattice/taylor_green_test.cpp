@@ -1,0 +1,70 @@
+// The 2D Taylor-Green vortex u = U (-cos kx sin ky, sin kx cos ky) decays as exp(-2 nu k^2 t).
+#include "lattice/fluid_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace rbcsim::lattice {
+namespace {
+
+// Projection of u_x onto the vortex mode -cos kx sin ky.
+double vortex_amplitude(const FluidSolver& solver, double wavenumber) {
+  const LatticeGrid& grid = solver.grid();
+  double projection = 0.0;
+  double norm = 0.0;
+  for (std::size_t node = 0; node < grid.node_count(); ++node) {
+    const auto [x, y, z] = grid.coordinates(node);
+    const double mode = -std::cos(wavenumber * x) * std::sin(wavenumber * y);
+    projection += solver.velocity()[0][node] * mode;
+    norm += mode * mode;
+  }
+  return projection / norm;
+}
+
+double measured_decay_rate(const char* collision, double tau) {
+  const int size = 32;
+  const double wavenumber = 2.0 * std::numbers::pi / size;
+  const double peak = 0.01;
+  FluidParameters parameters;
+  parameters.collision = collision;
+  parameters.collision_parameters.tau = tau;
+  FluidSolver solver(LatticeGrid(size, size, 1), parameters);
+  const std::size_t n = solver.grid().node_count();
+  std::vector<double> density(n);
+  VectorField velocity{std::vector<double>(n), std::vector<double>(n), std::vector<double>(n)};
+  for (std::size_t node = 0; node < n; ++node) {
+    const auto [x, y, z] = solver.grid().coordinates(node);
+    const double kx = wavenumber * x;
+    const double ky = wavenumber * y;
+    velocity[0][node] = -peak * std::cos(kx) * std::sin(ky);
+    velocity[1][node] = peak * std::sin(kx) * std::cos(ky);
+    // p = -rho U^2 (cos 2kx + cos 2ky) / 4 and rho = 1 + p / c_s^2.
+    density[node] = 1.0 - 0.75 * peak * peak * (std::cos(2.0 * kx) + std::cos(2.0 * ky));
+  }
+  solver.initialise_equilibrium(density, velocity);
+  // Skip the first steps, in which the missing non-equilibrium part of the initial state relaxes.
+  solver.advance(20);
+  const double first = vortex_amplitude(solver, wavenumber);
+  const std::size_t interval = 200;
+  solver.advance(interval);
+  const double second = vortex_amplitude(solver, wavenumber);
+  const double measured = std::log(first / second) / interval;
+  const double expected = 2.0 * solver.viscosity() * wavenumber * wavenumber;
+  std::printf("Taylor-Green %s tau %.2f: decay rate %.6e, expected %.6e\n", collision, tau,
+              measured, expected);
+  return measured / expected - 1.0;
+}
+
+TEST(TaylorGreen, DecayRateMatchesViscosityWithinOnePercent) {
+  for (const char* collision : {"bgk", "trt"}) {
+    for (const double tau : {0.6, 0.9}) {
+      EXPECT_LT(std::abs(measured_decay_rate(collision, tau)), 0.01) << collision << " tau " << tau;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rbcsim::lattice
