@@ -32,7 +32,7 @@ TEST(OptionTable, HoldsTheAgreedNamesAndDefaults) {
   EXPECT_EQ(default_of("physics.thermal_energy_J"), 4.100531391e-21);
   EXPECT_EQ(default_of("lattice.spacing_um"), 0.5);
   EXPECT_EQ(default_of("lattice.relaxation_time"), 1.0);
-  EXPECT_EQ(default_of("lattice.collision"), "bgk");
+  EXPECT_EQ(default_of("lattice.collision"), "trt");
   EXPECT_EQ(default_of("lattice.trt_magic"), 0.1875);
   EXPECT_EQ(default_of("ibm.kernel"), "phi2");
   EXPECT_EQ(default_of("membrane.k_link_kBT"), 7.0);
