@@ -86,6 +86,12 @@ RelaxationResult relax_membrane(const MembraneModel& model, std::span<Vec3> posi
         "relax_membrane: positions and external forces must have one "
         "entry per vertex");
   }
+  if (!(settings.mobility_um_per_s_per_pN > 0.0) || !(settings.step_fraction > 0.0) ||
+      !(settings.step_fraction < 2.0) || settings.stiffness_update_interval == 0) {
+    throw std::invalid_argument(
+        "relax_membrane: needs mobility > 0, 0 < step_fraction < 2 and "
+        "stiffness_update_interval > 0");
+  }
   auto workspace = model.make_workspace();
   auto forces = model.make_forces();
   RelaxationResult result;

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/SVD>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <vector>
@@ -81,6 +82,55 @@ TEST_P(NoisyCellRelaxes, BackToItsReferenceShape) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Distributions, NoisyCellRelaxes, ::testing::Values("paper", "gradient"));
+
+struct Extents {
+  double axial_um;       // along x, the pull
+  double transverse_um;  // along y
+};
+
+Extents stretched_extents(const MembraneModel& model, const std::vector<Vec3>& reference_um,
+                          double total_force_pN) {
+  // The five vertices of largest x are pulled by +F/5 each along x, the five of smallest x by -F/5.
+  std::vector<std::size_t> order(reference_um.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return reference_um[a].x() < reference_um[b].x();
+  });
+  std::vector<Vec3> external_pN(reference_um.size(), Vec3::Zero());
+  for (std::size_t k = 0; k < 5; ++k) {
+    external_pN[order[k]] = Vec3(-total_force_pN / 5, 0, 0);
+    external_pN[order[order.size() - 1 - k]] = Vec3(total_force_pN / 5, 0, 0);
+  }
+  auto positions = reference_um;
+  const auto result =
+      rbcsim::membrane::relax_membrane(model, positions, external_pN, {.force_tolerance_pN = 1e-3});
+  EXPECT_TRUE(result.converged) << "residual " << result.max_force_pN << " pN";
+  std::printf("F = %.1f pN: %zu iterations\n", total_force_pN, result.iterations);
+  Vec3 low = positions.front();
+  Vec3 high = positions.front();
+  for (const auto& p : positions) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  return {high.x() - low.x(), high.y() - low.y()};
+}
+
+// Pulled at both ends, the cell lengthens along the pull and narrows across it, and at small
+// forces the response is linear (doubling the force doubles the extension, up to the cubic
+// corrections of the force law, a few per cent at these strains).
+TEST(Relaxation, ExternalForcesStretchTheCellLinearlyAtSmallForce) {
+  const auto mesh = shapes::biconcave(3);
+  const MembraneModel model(mesh, MembraneParameters{});
+  const auto at_rest = stretched_extents(model, mesh.positions_um, 0.0);
+  const auto pulled = stretched_extents(model, mesh.positions_um, 1.0);
+  const auto pulled_twice = stretched_extents(model, mesh.positions_um, 2.0);
+  const double extension_um = pulled.axial_um - at_rest.axial_um;
+  EXPECT_GT(extension_um, 0.0);
+  EXPECT_LT(pulled.transverse_um, at_rest.transverse_um);
+  std::printf("axial extension %.5f um at 1 pN, %.5f um at 2 pN\n", extension_um,
+              pulled_twice.axial_um - at_rest.axial_um);
+  EXPECT_NEAR((pulled_twice.axial_um - at_rest.axial_um) / extension_um, 2.0, 0.1);
+}
 
 TEST(Relaxation, IterationLimitIsReportedAsNotConverged) {
   const auto mesh = shapes::sphere(2, 3.0);
