@@ -1,0 +1,36 @@
+// Measures of one cell's current shape that several force terms share, computed once per force
+// evaluation into caller-owned arrays (no allocation per call).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "common/vec3.hpp"
+#include "mesh/topology.hpp"
+#include "mesh/triangle_mesh.hpp"
+
+namespace rbcsim::membrane {
+
+struct CellGeometry {
+  // (1/2)(b - a) x (c - a) per triangle: outward normal times area, um^2.
+  std::vector<Vec3> triangle_area_vectors_um2;
+  std::vector<double> edge_lengths_um;
+  // Signed angle between the outward normals of the edge's triangles (convex positive), rad.
+  std::vector<double> dihedral_angles_rad;
+  double volume_um3 = 0.0;
+  // sum_j l_j theta_j / 2 = DeltaA / (2 D0) (Eqs. 12-13) and sum_j l_j |theta_j| / 2 = C / (2 D0)
+  // (Eq. 14), um. D0 cancels in every relative deviation, so it is never needed.
+  double signed_curvature_sum_um = 0.0;
+  double absolute_curvature_sum_um = 0.0;
+
+  CellGeometry() = default;
+  CellGeometry(std::size_t triangle_count, std::size_t edge_count);
+};
+
+// Fills `geometry` (sized for this mesh): the per-element measures in parallel, the cell sums
+// serially in element order so that they do not depend on the thread count.
+void measure_cell_geometry(std::span<const Vec3> positions_um,
+                           std::span<const mesh::Triangle> triangles,
+                           const mesh::MeshTopology& topology, CellGeometry& geometry);
+
+}  // namespace rbcsim::membrane

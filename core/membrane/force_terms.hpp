@@ -1,0 +1,125 @@
+// The six membrane force terms (paper Eqs. 6-18) and their registry. Each term is a class whose
+// evaluate() adds nothing to other terms' arrays; MembraneModel sums them. Every term's force
+// magnitude follows the shared law F = -(k kBT / length) slope(d) (force_law.hpp), with length = p
+// for the link and L0 (force_length_scale_um) for the others. Terms read the reference (L0,
+// theta0, A0, V0, ...) from TermContext::reference.
+//
+// Adding a term: a .cpp with its class (declared here) and one row in force_term_table.cpp.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string_view>
+
+#include "membrane/force_law.hpp"
+#include "membrane/force_term.hpp"
+#include "membrane/hinge.hpp"
+#include "membrane/parameters.hpp"
+#include "membrane/reference_state.hpp"
+
+namespace rbcsim::membrane {
+
+// What every term has: its force law and the scale k kBT / length of Eqs. 6-11.
+class LawTerm : public ForceTerm {
+ protected:
+  LawTerm(ForceLaw law, double k_kBT, double length_um, double thermal_energy_pN_um)
+      : law_(law), force_scale_pN_(k_kBT * thermal_energy_pN_um / length_um) {}
+
+  ForceLaw law_;
+  double force_scale_pN_;
+};
+
+// Link (Eq. 6), per edge, d = (L - L0)/L0, length = p. Central: the same in both distributions.
+class LinkTerm final : public LawTerm {
+ public:
+  explicit LinkTerm(const MembraneParameters& parameters);
+  void evaluate(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
+};
+
+// Local area (Eq. 8), per triangle, d = (A - A0)/A0. Central: the same in both distributions.
+class AreaTerm final : public LawTerm {
+ public:
+  explicit AreaTerm(const MembraneParameters& parameters);
+  void evaluate(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
+};
+
+// Volume (Eq. 9, no linear term), per cell, d = (V - V0)/V0. Central in both distributions.
+class VolumeTerm final : public LawTerm {
+ public:
+  explicit VolumeTerm(const MembraneParameters& parameters);
+  void evaluate(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
+};
+
+// Common loop of the three angle-based terms (length L0): per edge, the term's HingeLoad is
+// handed to the chosen distribution, which writes the hinge's four slots.
+class HingeTerm : public LawTerm {
+ public:
+  void evaluate(const TermContext& context, TermScratch& scratch, TermForces& out) const final;
+
+ protected:
+  HingeTerm(ForceLaw law, double k_kBT, const MembraneParameters& parameters,
+            HingeDistribution distribution)
+      : LawTerm(law, k_kBT, parameters.force_length_scale_um, parameters.thermal_energy_pN_um),
+        distribute_(distribution) {}
+
+ private:
+  // Deviations of the current shape, limit check, energy and max |d| (into scratch and out).
+  virtual void measure(const TermContext& context, TermScratch& scratch, TermForces& out) const = 0;
+  virtual HingeLoad edge_load(const TermContext& context, const TermScratch& scratch,
+                              std::size_t edge) const = 0;
+
+  HingeDistribution distribute_;
+};
+
+// Bending (Eq. 7), per edge, d = theta - theta0 (rad).
+class BendingTerm final : public HingeTerm {
+ public:
+  BendingTerm(const MembraneParameters& parameters, HingeDistribution distribution);
+  // The load of an edge whose angle deviates by d from its reference.
+  HingeLoad load_for_deviation(double deviation_rad) const;
+
+ private:
+  void measure(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
+  HingeLoad edge_load(const TermContext& context, const TermScratch& scratch,
+                      std::size_t edge) const override;
+
+  double gradient_scale_pN_um_;  // K_b of the energy, see bending_term.cpp
+};
+
+// Area difference (Eqs. 10, 12, 13, 15, 16) and total curvature (Eqs. 11, 14, 17, 18): per cell,
+// d = (S - S0)/|S0| with S = sum_j l_j w(theta_j) / 2, where w(theta) = theta for the area
+// difference (S = DeltaA / 2 D0) and |theta| for the total curvature (S = C / 2 D0).
+class CurvatureSumTerm final : public HingeTerm {
+ public:
+  enum class Measure { signed_curvature, absolute_curvature };
+  CurvatureSumTerm(std::string_view name, Measure measure, double k_kBT, double tau,
+                   const MembraneParameters& parameters, HingeDistribution distribution);
+
+ private:
+  void measure(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
+  HingeLoad edge_load(const TermContext& context, const TermScratch& scratch,
+                      std::size_t edge) const override;
+  double current_sum_um(const CellGeometry& geometry) const;
+  double reference_sum_um(const ReferenceState& reference) const;  // S0
+
+  std::string_view name_;
+  Measure measure_;
+  double gradient_scale_pN_;  // K / |S0| of the energy, see curvature_sum_term.cpp
+};
+
+// Factories of the area difference (guards |DeltaA0| near zero) and total curvature terms.
+std::unique_ptr<ForceTerm> make_area_difference_term(const MembraneParameters& parameters,
+                                                     const ReferenceState& reference);
+std::unique_ptr<ForceTerm> make_total_curvature_term(const MembraneParameters& parameters,
+                                                     const ReferenceState& reference);
+
+// The registry, in evaluation order. Factories throw InputError for parameters or a reference the
+// term cannot work with.
+struct ForceTermEntry {
+  std::string_view name;
+  std::unique_ptr<ForceTerm> (*make)(const MembraneParameters& parameters,
+                                     const ReferenceState& reference);
+};
+std::span<const ForceTermEntry> force_term_table();
+
+}  // namespace rbcsim::membrane

@@ -1,0 +1,63 @@
+#include "membrane/reference_state.hpp"
+
+#include <string>
+
+#include "common/errors.hpp"
+#include "membrane/cell_geometry.hpp"
+
+namespace rbcsim::membrane {
+namespace {
+
+constexpr const char* kSource = "stress-free mesh";
+
+double mean_volume_gradient_um2(std::span<const mesh::Triangle> triangles,
+                                std::span<const Vec3> area_vectors_um2, std::size_t vertex_count) {
+  std::vector<Vec3> gradients(vertex_count, Vec3::Zero());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    for (auto corner : triangles[t]) gradients[corner] += area_vectors_um2[t] / 3.0;
+  }
+  double sum = 0.0;
+  for (const auto& gradient : gradients) sum += gradient.norm();
+  return sum / static_cast<double>(vertex_count);
+}
+
+}  // namespace
+
+ReferenceState capture_reference_state(std::span<const Vec3> positions_um,
+                                       std::span<const mesh::Triangle> triangles,
+                                       const mesh::MeshTopology& topology) {
+  CellGeometry geometry(triangles.size(), topology.edge_count());
+  measure_cell_geometry(positions_um, triangles, topology, geometry);
+
+  ReferenceState reference;
+  reference.edge_lengths_um = geometry.edge_lengths_um;
+  reference.dihedral_angles_rad = geometry.dihedral_angles_rad;
+  reference.triangle_areas_um2.resize(triangles.size());
+  reference.triangle_perimeters_um.resize(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    const double area_um2 = geometry.triangle_area_vectors_um2[t].norm();
+    if (!(area_um2 > 0.0)) {
+      throw InputError(kSource, "triangle " + std::to_string(t) +
+                                    " has zero area; the membrane forces need non-degenerate "
+                                    "reference triangles");
+    }
+    const auto& c = triangles[t];
+    reference.triangle_areas_um2[t] = area_um2;
+    reference.triangle_perimeters_um[t] = (positions_um[c[1]] - positions_um[c[0]]).norm() +
+                                          (positions_um[c[2]] - positions_um[c[1]]).norm() +
+                                          (positions_um[c[0]] - positions_um[c[2]]).norm();
+  }
+  if (!(geometry.volume_um3 > 0.0)) {
+    throw InputError(kSource, "enclosed volume " + std::to_string(geometry.volume_um3) +
+                                  " um^3 is not positive: triangles must be counter-clockwise "
+                                  "seen from outside");
+  }
+  reference.volume_um3 = geometry.volume_um3;
+  reference.mean_volume_gradient_um2 = mean_volume_gradient_um2(
+      triangles, geometry.triangle_area_vectors_um2, topology.vertex_count());
+  reference.signed_curvature_sum_um = geometry.signed_curvature_sum_um;
+  reference.absolute_curvature_sum_um = geometry.absolute_curvature_sum_um;
+  return reference;
+}
+
+}  // namespace rbcsim::membrane

@@ -1,0 +1,37 @@
+// The stress-free reference of one cell (DESIGN.md §3.4): every L0, theta0, A0 and the cell's V0,
+// DeltaA0, C0, captured from the initial mesh (the generated or imported shape is stress-free).
+// A plain struct, so a restart can restore it and a test can edit it.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "common/vec3.hpp"
+#include "mesh/topology.hpp"
+#include "mesh/triangle_mesh.hpp"
+
+namespace rbcsim::membrane {
+
+struct ReferenceState {
+  std::vector<double> edge_lengths_um;      // L0 per edge (Eq. 6)
+  std::vector<double> dihedral_angles_rad;  // theta0 per edge (Eq. 7)
+  std::vector<double> triangle_areas_um2;   // A0 per triangle (Eq. 8)
+  // Perimeter per triangle: normalises the area force to the paper's magnitude (area_term.cpp).
+  std::vector<double> triangle_perimeters_um;
+  double volume_um3 = 0.0;  // V0 (Eq. 9)
+  // Mean over vertices of |dV/dx_i| = |(1/3) sum of the area vectors of i's triangles|, um^2:
+  // normalises the volume force to the paper's magnitude (volume_term.cpp).
+  double mean_volume_gradient_um2 = 0.0;
+  // sum_j M0_j = DeltaA0 / (2 D0) and sum_j |M0_j| = C0 / (2 D0), with M_j = l_j theta_j / 2
+  // (Eqs. 12-14), um. The monolayer thickness D0 cancels in the relative deviations.
+  double signed_curvature_sum_um = 0.0;
+  double absolute_curvature_sum_um = 0.0;
+};
+
+// Throws InputError (source "stress-free mesh") for a degenerate triangle or a non-positive
+// enclosed volume (inward-facing triangles).
+ReferenceState capture_reference_state(std::span<const Vec3> positions_um,
+                                       std::span<const mesh::Triangle> triangles,
+                                       const mesh::MeshTopology& topology);
+
+}  // namespace rbcsim::membrane

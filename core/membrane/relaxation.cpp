@@ -1,0 +1,121 @@
+#include "membrane/relaxation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+namespace rbcsim::membrane {
+namespace {
+
+constexpr int kPowerIterations = 30;
+// Finite-difference displacement of the power iteration, relative to the mean edge length:
+// small enough to stay linear, large enough for round-off (forces ~1 pN, stiffness ~10-100 pN/um).
+constexpr double kProbeFraction = 1e-6;
+
+// A fixed pseudo-random start vector (splitmix64), so the estimate is reproducible.
+std::vector<Vec3> start_direction(std::size_t count) {
+  std::uint64_t state = 0x9E3779B97F4A7C15ull;
+  auto next = [&state] {
+    state += 0x9E3779B97F4A7C15ull;
+    std::uint64_t z = state;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    z ^= z >> 31;
+    return static_cast<double>(z >> 11) / 9007199254740992.0 * 2.0 - 1.0;
+  };
+  std::vector<Vec3> direction(count);
+  for (auto& component : direction) component = Vec3(next(), next(), next());
+  return direction;
+}
+
+double norm(std::span<const Vec3> vectors) {
+  double sum = 0.0;
+  for (const auto& v : vectors) sum += v.squaredNorm();
+  return std::sqrt(sum);
+}
+
+double max_norm(std::span<const Vec3> vectors) {
+  double largest = 0.0;
+  for (const auto& v : vectors) largest = std::max(largest, v.norm());
+  return largest;
+}
+
+double mean_reference_edge_um(const ReferenceState& reference) {
+  double sum = 0.0;
+  for (double length : reference.edge_lengths_um) sum += length;
+  return sum / static_cast<double>(reference.edge_lengths_um.size());
+}
+
+}  // namespace
+
+double estimate_stiffest_mode_pN_per_um(const MembraneModel& model,
+                                        std::span<const Vec3> positions_um) {
+  const auto count = model.vertex_count();
+  auto workspace = model.make_workspace();
+  auto forces = model.make_forces();
+  model.compute(positions_um, workspace, forces);
+  const std::vector<Vec3> base_pN = forces.total_pN;
+
+  auto direction = start_direction(count);
+  std::vector<Vec3> probe_um(count);
+  const double probe_um_scale = kProbeFraction * mean_reference_edge_um(model.reference());
+  double stiffness_pN_per_um = 0.0;
+  for (int iteration = 0; iteration < kPowerIterations; ++iteration) {
+    const double length = norm(direction);
+    for (auto& v : direction) v /= length;
+    const double step_um = probe_um_scale / max_norm(direction);
+    for (std::size_t i = 0; i < count; ++i) probe_um[i] = positions_um[i] + step_um * direction[i];
+    model.compute(probe_um, workspace, forces);
+    for (std::size_t i = 0; i < count; ++i) {
+      direction[i] = (forces.total_pN[i] - base_pN[i]) / step_um;
+    }
+    stiffness_pN_per_um = norm(direction);
+  }
+  return stiffness_pN_per_um;
+}
+
+RelaxationResult relax_membrane(const MembraneModel& model, std::span<Vec3> positions_um,
+                                std::span<const Vec3> external_forces_pN,
+                                const RelaxationSettings& settings) {
+  const auto count = model.vertex_count();
+  if (positions_um.size() != count ||
+      (!external_forces_pN.empty() && external_forces_pN.size() != count)) {
+    throw std::invalid_argument(
+        "relax_membrane: positions and external forces must have one "
+        "entry per vertex");
+  }
+  if (!(settings.mobility_um_per_s_per_pN > 0.0) || !(settings.step_fraction > 0.0) ||
+      !(settings.step_fraction < 2.0) || settings.stiffness_update_interval == 0) {
+    throw std::invalid_argument(
+        "relax_membrane: needs mobility > 0, 0 < step_fraction < 2 and "
+        "stiffness_update_interval > 0");
+  }
+  auto workspace = model.make_workspace();
+  auto forces = model.make_forces();
+  RelaxationResult result;
+  for (result.iterations = 0;; ++result.iterations) {
+    if (result.iterations % settings.stiffness_update_interval == 0) {
+      result.stiffest_mode_pN_per_um = estimate_stiffest_mode_pN_per_um(model, positions_um);
+      result.time_step_s = settings.step_fraction /
+                           (settings.mobility_um_per_s_per_pN * result.stiffest_mode_pN_per_um);
+    }
+    model.compute(positions_um, workspace, forces);
+    result.capped_vertex_count += forces.capped_vertex_count;
+    if (!external_forces_pN.empty()) {
+      for (std::size_t i = 0; i < count; ++i) forces.total_pN[i] += external_forces_pN[i];
+    }
+    result.max_force_pN = max_norm(forces.total_pN);
+    result.converged = result.max_force_pN < settings.force_tolerance_pN;
+    if (result.converged || result.iterations == settings.max_iterations) return result;
+
+    const double displacement_per_pN_um = settings.mobility_um_per_s_per_pN * result.time_step_s;
+    for (std::size_t i = 0; i < count; ++i) {
+      positions_um[i] += displacement_per_pN_um * forces.total_pN[i];
+    }
+    result.simulated_time_s += result.time_step_s;
+  }
+}
+
+}  // namespace rbcsim::membrane
