@@ -13,6 +13,10 @@ constexpr int kSignificantDigits = 9;
 void check(std::size_t point_count, std::span<const std::array<std::int32_t, 3>> triangles,
            std::span<const PointDataArray> point_arrays) {
   for (const auto& array : point_arrays) {
+    if (array.name.empty() || array.name.find_first_of("<>&\"'") != std::string::npos) {
+      throw std::invalid_argument("VTK point array name '" + array.name +
+                                  "' must be non-empty plain text (no XML markup characters)");
+    }
     if (array.component_count != 1 && array.component_count != 3) {
       throw std::invalid_argument("VTK point array '" + array.name +
                                   "' must have 1 or 3 components");
