@@ -48,7 +48,9 @@ struct MeshReport {
   double area_um2 = 0.0;
   double volume_um3 = 0.0;  // signed: negative for an inside-out mesh
   double reduced_volume = 0.0;
-  Vec3 principal_extents_um = Vec3::Zero();  // along the principal axes, largest first
+  // Extents along the principal axes of the vertex cloud, in order of decreasing variance (for an
+  // elongated or flat cell: largest extent first, the discocyte's thickness last).
+  Vec3 principal_extents_um = Vec3::Zero();
   Vec3 bounding_box_min_um = Vec3::Zero();
   Vec3 bounding_box_max_um = Vec3::Zero();
 

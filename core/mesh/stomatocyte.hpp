@@ -22,7 +22,8 @@ struct StomatocyteShape {
   // Reduced volume 6 sqrt(pi) V / A^1.5 of the continuum shape. Stomatocytes observed and
   // computed in the literature lie around 0.5-0.65 (Lim et al. 2002 keep the discocyte's 0.642
   // through the whole stomatocyte-discocyte-echinocyte sequence); 0.60 gives a cup whose cavity
-  // is about as deep as the cell is thick. Reachable range with the other defaults: ~0.3-0.70.
+  // is about as deep as the cell is thick. With the other defaults any value up to 0.746 is
+  // reachable (a thinner wall gives less; at 0.3 the cup is a thin bowl).
   double reduced_volume = 0.60;
   double cup_half_angle_deg = 120.0;  // opening of the midline arc (90 = hemisphere)
   double rim_thickening = 0.6;        // wall half-thickness at the rim / at the bottom - 1
