@@ -9,7 +9,7 @@
 // where a is chosen so that the tip's radius of curvature on the final surface (the radial map
 // widens it by R_tip / R_body) equals the requested one. The body radius is solved so that the
 // mesh has the requested membrane area (the discocyte's), after which the mesh is scaled
-// uniformly by the residual (< 0.1 %) to match it exactly.
+// uniformly by the small residual to match it exactly.
 #pragma once
 
 #include <vector>
