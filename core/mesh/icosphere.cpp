@@ -24,7 +24,8 @@ TriangleMesh unit_icosahedron() {
   return mesh;
 }
 
-// Splits every triangle into four, sharing each edge midpoint between its two triangles.
+}  // namespace
+
 TriangleMesh subdivide_on_sphere(const TriangleMesh& coarse) {
   TriangleMesh fine;
   fine.positions_um = coarse.positions_um;
@@ -50,8 +51,6 @@ TriangleMesh subdivide_on_sphere(const TriangleMesh& coarse) {
   }
   return fine;
 }
-
-}  // namespace
 
 TriangleMesh unit_icosphere(int subdivisions) {
   if (subdivisions < 0 || subdivisions > 7) {

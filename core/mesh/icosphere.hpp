@@ -10,4 +10,9 @@ namespace rbcsim::mesh {
 
 TriangleMesh unit_icosphere(int subdivisions);
 
+// One level of the icosphere refinement: every triangle split into four, each new vertex the
+// normalised midpoint of its edge. Applied to any mesh of the unit sphere with the connectivity of
+// level N it yields the connectivity of level N + 1 (the generators relax level by level).
+TriangleMesh subdivide_on_sphere(const TriangleMesh& coarse);
+
 }  // namespace rbcsim::mesh

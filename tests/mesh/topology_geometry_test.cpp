@@ -7,6 +7,7 @@
 
 #include "mesh/geometry.hpp"
 #include "mesh/topology.hpp"
+#include "mesh_test_support.hpp"
 
 namespace {
 
@@ -14,16 +15,7 @@ using rbcsim::Vec3;
 using rbcsim::mesh::MeshTopology;
 using rbcsim::mesh::TriangleMesh;
 
-// Regular octahedron with vertices at unit distance on the axes, triangles counter-clockwise
-// seen from outside.
-TriangleMesh octahedron() {
-  TriangleMesh mesh;
-  mesh.positions_um = {Vec3(1, 0, 0),  Vec3(-1, 0, 0), Vec3(0, 1, 0),
-                       Vec3(0, -1, 0), Vec3(0, 0, 1),  Vec3(0, 0, -1)};
-  mesh.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
-                    {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
-  return mesh;
-}
+using rbcsim::mesh::testing::octahedron;
 
 TEST(Topology, OctahedronCountsAndEdgeOrientation) {
   const auto mesh = octahedron();

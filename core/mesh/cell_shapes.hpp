@@ -1,0 +1,28 @@
+// The generated cell morphologies, by name: ONE table (cell_shapes.cpp) maps each name to its
+// generator, so adding a shape is adding a file and a row.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+
+#include "mesh/triangle_mesh.hpp"
+
+namespace rbcsim::mesh {
+
+struct CellShapeEntry {
+  std::string_view name;                       // as on the command line: "discocyte", ...
+  std::string_view description;                // one line for --help and reports
+  TriangleMesh (*generate)(int subdivisions);  // with the shape's default parameters
+};
+
+std::span<const CellShapeEntry> cell_shapes();
+
+// "discocyte, stomatocyte-II, echinocyte-III": for help texts and error messages.
+std::string cell_shape_names();
+
+// Throws rbcsim::InputError for an unknown name (listing the known ones) or a subdivision level
+// outside 0..7.
+TriangleMesh generate_cell(std::string_view shape_name, int subdivisions);
+
+}  // namespace rbcsim::mesh
