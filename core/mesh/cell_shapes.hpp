@@ -6,14 +6,25 @@
 #include <string>
 #include <string_view>
 
+#include "mesh/discocyte.hpp"
+#include "mesh/echinocyte.hpp"
+#include "mesh/stomatocyte.hpp"
 #include "mesh/triangle_mesh.hpp"
 
 namespace rbcsim::mesh {
 
+// The parameters of every generator; each generator reads its own member. The config options
+// mesh.discocyte.*, mesh.stomatocyte.*, mesh.echinocyte.* fill it (core/setup).
+struct CellShapeParameters {
+  DiscocyteShape discocyte;
+  StomatocyteShape stomatocyte;
+  EchinocyteShape echinocyte;
+};
+
 struct CellShapeEntry {
-  std::string_view name;                       // as on the command line: "discocyte", ...
-  std::string_view description;                // one line for --help and reports
-  TriangleMesh (*generate)(int subdivisions);  // with the shape's default parameters
+  std::string_view name;         // as on the command line: "discocyte", ...
+  std::string_view description;  // one line for --help and reports
+  TriangleMesh (*generate)(const CellShapeParameters& parameters, int subdivisions);
 };
 
 std::span<const CellShapeEntry> cell_shapes();
@@ -23,6 +34,7 @@ std::string cell_shape_names();
 
 // Throws rbcsim::InputError for an unknown name (listing the known ones) or a subdivision level
 // outside 0..7.
-TriangleMesh generate_cell(std::string_view shape_name, int subdivisions);
+TriangleMesh generate_cell(std::string_view shape_name, int subdivisions,
+                           const CellShapeParameters& parameters = {});
 
 }  // namespace rbcsim::mesh

@@ -1,76 +1,88 @@
-#include <numbers>
-
 #include "config/options/option_areas.hpp"
+#include "membrane/parameters.hpp"
 
 namespace rbcsim::config {
 namespace {
+
+// The defaults come from the membrane module's parameter struct: one source of truth.
+const membrane::MembraneParameters kDefaults{};
 
 // Every force term has the form F = -(k kBT / length) d (1 + 1/(tau^2 - d^2)) (Eqs. 6-11):
 // k is its stiffness in kBT, tau the limit of its relative deviation d.
 void add_stiffnesses(OptionTable& table) {
   // Discocyte values of Table 2; share/config/<morphology>.json overrides them per morphology.
-  table.add_number("membrane.k_link_kBT", "kBT", 7.0, "Link stiffness k_l (Eq. 6).").at_least(0.0);
-  table.add_number("membrane.k_bend_kBT", "kBT", 50.0, "Bending stiffness k_b (Eq. 7).")
-      .at_least(0.0);
-  table.add_number("membrane.k_area_kBT", "kBT", 5.0, "Local area stiffness k_a (Eq. 8).")
-      .at_least(0.0);
-  table.add_number("membrane.k_volume_kBT", "kBT", 20.0, "Volume stiffness k_v (Eq. 9).")
+  table
+      .add_number("membrane.k_link_kBT", "kBT", kDefaults.k_link_kBT, "Link stiffness k_l (Eq. 6).")
       .at_least(0.0);
   table
-      .add_number("membrane.k_area_difference_kBT", "kBT", 300.0,
+      .add_number("membrane.k_bend_kBT", "kBT", kDefaults.k_bend_kBT,
+                  "Bending stiffness k_b (Eq. 7).")
+      .at_least(0.0);
+  table
+      .add_number("membrane.k_area_kBT", "kBT", kDefaults.k_area_kBT,
+                  "Local area stiffness k_a (Eq. 8).")
+      .at_least(0.0);
+  table
+      .add_number("membrane.k_volume_kBT", "kBT", kDefaults.k_volume_kBT,
+                  "Volume stiffness k_v (Eq. 9).")
+      .at_least(0.0);
+  table
+      .add_number("membrane.k_area_difference_kBT", "kBT", kDefaults.k_area_difference_kBT,
                   "Area-difference stiffness k_ad (Eq. 10).")
       .at_least(0.0);
   table
-      .add_number("membrane.k_total_curvature_kBT", "kBT", 100.0,
+      .add_number("membrane.k_total_curvature_kBT", "kBT", kDefaults.k_total_curvature_kBT,
                   "Total-curvature stiffness k_c (Eq. 11).")
       .at_least(0.0);
 }
 
 void add_limits(OptionTable& table) {
-  table.add_number("membrane.tau_link", "", 3.0, "Limit tau_l of the relative edge strain (Eq. 6).")
+  table
+      .add_number("membrane.tau_link", "", kDefaults.tau_link,
+                  "Limit tau_l of the relative edge strain (Eq. 6).")
       .above(0.0);
   table
-      .add_number("membrane.tau_bend_rad", "rad", std::numbers::pi / 6.0,
+      .add_number("membrane.tau_bend_rad", "rad", kDefaults.tau_bend_rad,
                   "Limit tau_b of the dihedral angle change (Eq. 7), pi/6.")
       .above(0.0);
-  table.add_number("membrane.tau_area", "", 0.3, "Limit tau_a of the relative area change (Eq. 8).")
+  table
+      .add_number("membrane.tau_area", "", kDefaults.tau_area,
+                  "Limit tau_a of the relative area change (Eq. 8).")
       .above(0.0);
   // Table 2 prints 0.01, but HemoCell stores tau squared and runs with tau_v = 0.1; 0.01 would
   // make a 1 % volume change infinitely stiff.
   table
-      .add_number("membrane.tau_volume", "", 0.1,
+      .add_number("membrane.tau_volume", "", kDefaults.tau_volume,
                   "Limit tau_v of the relative volume change (Eq. 9); Table 2 prints 0.01, which "
                   "is HemoCell's stored tau_v^2: HemoCell runs with tau_v = 0.1.")
       .above(0.0);
   table
-      .add_number("membrane.tau_area_difference", "", 1.5,
+      .add_number("membrane.tau_area_difference", "", kDefaults.tau_area_difference,
                   "Limit tau_ad of the relative area difference change (Eq. 10).")
       .above(0.0);
   table
-      .add_number("membrane.tau_total_curvature", "", 3.87,
+      .add_number("membrane.tau_total_curvature", "", kDefaults.tau_total_curvature,
                   "Limit tau_tc of the relative total curvature change (Eq. 11).")
       .above(0.0);
 }
 
 void add_scales_and_variants(OptionTable& table) {
   table
-      .add_number("membrane.persistence_length_um", "um", 0.0075,
+      .add_number("membrane.persistence_length_um", "um", kDefaults.persistence_length_um,
                   "Persistence length p, the length in the denominator of the link force (Eq. 6; "
                   "HemoCell's p = 7.5 nm).")
       .above(0.0);
   table
-      .add_number("membrane.force_length_scale_um", "um", 0.25,
+      .add_number("membrane.force_length_scale_um", "um", kDefaults.force_length_scale_um,
                   "L0 of Table 2, the length in the denominator of Eqs. 7-11.")
       .above(0.0);
-  table.add_choice_list("membrane.forces",
-                        {"link", "bend", "area", "volume", "area_difference", "total_curvature"},
-                        {"link", "bend", "area", "volume", "area_difference", "total_curvature"},
+  table.add_choice_list("membrane.forces", membrane::all_force_term_names(), kDefaults.forces,
                         "Force terms switched on.");
-  table.add_choice("membrane.distribution", {"gradient", "paper"}, "gradient",
+  table.add_choice("membrane.distribution", {"gradient", "paper"}, kDefaults.distribution,
                    "Distribution of the angle-based forces: exact energy gradient (conserves "
                    "angular momentum) or Eqs. 15-18 as printed.");
   table
-      .add_number("membrane.vertex_force_cap_pN", "pN", 50.0,
+      .add_number("membrane.vertex_force_cap_pN", "pN", kDefaults.vertex_force_cap_pN,
                   "Per-vertex force cap: a safety net only, every trigger is reported.")
       .above(0.0);
 }

@@ -1,0 +1,67 @@
+#include "setup/cell_from_config.hpp"
+
+#include <array>
+#include <utility>
+
+#include "mesh/import.hpp"
+
+namespace rbcsim::setup {
+namespace {
+
+using Shapes = mesh::CellShapeParameters;
+
+// Number options of the generators: path -> (member of CellShapeParameters, member of the shape).
+template <class Shape>
+using ShapeNumber = std::pair<const char*, double Shape::*>;
+
+constexpr std::array<ShapeNumber<mesh::DiscocyteShape>, 4> kDiscocyteNumbers{{
+    {"mesh.discocyte.radius_um", &mesh::DiscocyteShape::radius_um},
+    {"mesh.discocyte.c0", &mesh::DiscocyteShape::c0},
+    {"mesh.discocyte.c2", &mesh::DiscocyteShape::c2},
+    {"mesh.discocyte.c4", &mesh::DiscocyteShape::c4},
+}};
+constexpr std::array<ShapeNumber<mesh::StomatocyteShape>, 4> kStomatocyteNumbers{{
+    {"mesh.stomatocyte.membrane_area_um2", &mesh::StomatocyteShape::membrane_area_um2},
+    {"mesh.stomatocyte.reduced_volume", &mesh::StomatocyteShape::reduced_volume},
+    {"mesh.stomatocyte.cup_half_angle_deg", &mesh::StomatocyteShape::cup_half_angle_deg},
+    {"mesh.stomatocyte.rim_thickening", &mesh::StomatocyteShape::rim_thickening},
+}};
+constexpr std::array<ShapeNumber<mesh::EchinocyteShape>, 5> kEchinocyteNumbers{{
+    {"mesh.echinocyte.membrane_area_um2", &mesh::EchinocyteShape::membrane_area_um2},
+    {"mesh.echinocyte.spicule_height_um", &mesh::EchinocyteShape::spicule_height_um},
+    {"mesh.echinocyte.spicule_tip_radius_um", &mesh::EchinocyteShape::spicule_tip_radius_um},
+    {"mesh.echinocyte.spicule_flank_angle_deg", &mesh::EchinocyteShape::spicule_flank_angle_deg},
+    {"mesh.echinocyte.spicule_base_blend_um", &mesh::EchinocyteShape::spicule_base_blend_um},
+}};
+
+template <class Shape, std::size_t N>
+void read_numbers(const config::Config& config, const std::array<ShapeNumber<Shape>, N>& numbers,
+                  Shape& shape) {
+  for (const auto& [path, member] : numbers) shape.*member = config.number(path);
+}
+
+}  // namespace
+
+mesh::CellShapeParameters cell_shape_parameters_from(const config::Config& config) {
+  Shapes parameters;
+  read_numbers(config, kDiscocyteNumbers, parameters.discocyte);
+  read_numbers(config, kStomatocyteNumbers, parameters.stomatocyte);
+  read_numbers(config, kEchinocyteNumbers, parameters.echinocyte);
+  parameters.echinocyte.spicule_count = config.integer("mesh.echinocyte.spicule_count");
+  return parameters;
+}
+
+CellMesh cell_mesh_from(const config::Config& config) {
+  const auto file = config.string("mesh.file");
+  if (!file.empty()) {
+    auto imported = mesh::import_mesh(file);
+    return {std::move(imported.mesh), file, std::move(imported.notices)};
+  }
+  const auto shape = config.string("morphology");
+  const auto level = config.integer("mesh.subdivisions");
+  return {mesh::generate_cell(shape, level, cell_shape_parameters_from(config)),
+          "built-in " + shape + " level " + std::to_string(level),
+          {}};
+}
+
+}  // namespace rbcsim::setup

@@ -1,0 +1,84 @@
+// The bridge from the resolved config to the engine's structs: values arrive in the right place
+// and unit, per morphology, and the cell comes from the generator or the file as configured.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "config/config.hpp"
+#include "mesh/echinocyte.hpp"
+#include "setup/cell_from_config.hpp"
+#include "setup/membrane_from_config.hpp"
+
+namespace {
+
+using rbcsim::config::ConfigRequest;
+using rbcsim::config::resolve_config;
+
+TEST(MembraneFromConfig, DiscocyteDefaultsAreTableTwoInPiconewtonMicrometres) {
+  const auto parameters = rbcsim::setup::membrane_parameters_from(resolve_config());
+  // Table 2 of the paper, discocyte column.
+  EXPECT_DOUBLE_EQ(parameters.k_link_kBT, 7.0);
+  EXPECT_DOUBLE_EQ(parameters.k_bend_kBT, 50.0);
+  EXPECT_DOUBLE_EQ(parameters.k_area_kBT, 5.0);
+  EXPECT_DOUBLE_EQ(parameters.k_volume_kBT, 20.0);
+  EXPECT_DOUBLE_EQ(parameters.k_area_difference_kBT, 300.0);
+  EXPECT_DOUBLE_EQ(parameters.k_total_curvature_kBT, 100.0);
+  EXPECT_DOUBLE_EQ(parameters.tau_bend_rad, std::numbers::pi / 6);
+  EXPECT_DOUBLE_EQ(parameters.tau_total_curvature, 3.87);
+  // kBT = 4.100531391e-21 J = 4.100531391e-3 pN um.
+  EXPECT_NEAR(parameters.thermal_energy_pN_um, 4.100531391e-3, 1e-15);
+  EXPECT_EQ(parameters.forces.size(), 6u);
+}
+
+TEST(MembraneFromConfig, MorphologyAndOverridesReachTheStruct) {
+  const auto stomatocyte = rbcsim::setup::membrane_parameters_from(resolve_config(
+      {.morphology = "stomatocyte-II",
+       .assignments = {"membrane.forces=link,bend,area,volume", "membrane.distribution=paper"}}));
+  // Table 2, stomatocyte II column.
+  EXPECT_DOUBLE_EQ(stomatocyte.k_link_kBT, 11.0);
+  EXPECT_DOUBLE_EQ(stomatocyte.k_bend_kBT, 80.0);
+  EXPECT_DOUBLE_EQ(stomatocyte.k_area_difference_kBT, 660.0);
+  EXPECT_DOUBLE_EQ(stomatocyte.k_total_curvature_kBT, 220.0);
+  EXPECT_EQ(stomatocyte.forces, (std::vector<std::string>{"link", "bend", "area", "volume"}));
+  EXPECT_EQ(stomatocyte.distribution, "paper");
+}
+
+TEST(CellFromConfig, GeneratesTheMorphologyAtTheConfiguredLevel) {
+  const auto cell = rbcsim::setup::cell_mesh_from(
+      resolve_config({.morphology = "stomatocyte-II", .assignments = {"mesh.subdivisions=3"}}));
+  EXPECT_EQ(cell.mesh.vertex_count(), 642u);  // 10 * 4^3 + 2
+  EXPECT_EQ(cell.source, "built-in stomatocyte-II level 3");
+}
+
+TEST(CellFromConfig, EchinocyteSpiculeCountReachesTheGenerator) {
+  const int spicules = 44;
+  const auto cell = rbcsim::setup::cell_mesh_from(resolve_config(
+      {.morphology = "echinocyte-III",
+       .assignments = {"mesh.echinocyte.spicule_count=" + std::to_string(spicules)}}));
+  std::vector<double> radii;
+  for (const auto& p : cell.mesh.positions_um) radii.push_back(p.norm());
+  std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
+  const double median_radius_um = radii[radii.size() / 2];
+  // Along every one of the 44 spicule axes there is a vertex well above the body: a tip.
+  for (const auto& axis : rbcsim::mesh::spicule_axes(spicules)) {
+    double highest_along_axis_um = 0.0;
+    for (const auto& p : cell.mesh.positions_um) {
+      if (p.normalized().dot(axis) > std::cos(10.0 * std::numbers::pi / 180.0)) {
+        highest_along_axis_um = std::max(highest_along_axis_um, p.norm());
+      }
+    }
+    EXPECT_GT(highest_along_axis_um, median_radius_um + 0.4);
+  }
+}
+
+TEST(CellFromConfig, ReadsTheConfiguredMeshFile) {
+  const std::string file = RBCSIM_SOURCE_DIR "/meshes/discocyte_n3.stl";
+  const auto cell =
+      rbcsim::setup::cell_mesh_from(resolve_config({.assignments = {"mesh.file=" + file}}));
+  EXPECT_EQ(cell.mesh.vertex_count(), 642u);
+  EXPECT_EQ(cell.source, file);
+}
+
+}  // namespace
