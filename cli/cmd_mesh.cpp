@@ -6,17 +6,20 @@
 #include <string>
 
 #include "command_registry.hpp"
+#include "common_options.hpp"
 #include "mesh/cell_shapes.hpp"
 #include "mesh/import.hpp"
 #include "mesh/inspection.hpp"
 #include "mesh/stl_writer.hpp"
+#include "setup/cell_from_config.hpp"
 
 namespace rbcsim::cli {
 namespace {
 
 struct GenerateOptions {
-  std::string shape = "discocyte";
-  int subdivisions = 4;
+  config::ConfigRequest config;      // --config/--set carry the mesh.<shape>.* generator parameters
+  std::optional<std::string> shape;  // default: the config's morphology
+  std::optional<int> subdivisions;   // default: the config's mesh.subdivisions
   std::string output;
   bool json = false;
 };
@@ -51,9 +54,13 @@ void print_report(const mesh::MeshReport& report, bool json, nlohmann::ordered_j
 }
 
 void run_generate(const GenerateOptions& options) {
-  const auto cell = mesh::generate_cell(options.shape, options.subdivisions);
+  const auto config = config::resolve_config(options.config);
+  const auto shape = options.shape.value_or(config.string("morphology"));
+  const auto subdivisions = options.subdivisions.value_or(config.integer("mesh.subdivisions"));
+  const auto cell =
+      mesh::generate_cell(shape, subdivisions, setup::cell_shape_parameters_from(config));
   if (!options.output.empty()) mesh::write_mesh_file(options.output, cell);
-  nlohmann::ordered_json header = {{"shape", options.shape}, {"subdivisions", options.subdivisions}};
+  nlohmann::ordered_json header = {{"shape", shape}, {"subdivisions", subdivisions}};
   if (!options.output.empty()) header["output"] = options.output;
   print_report(mesh::inspect_mesh(cell), options.json, header);
 }
@@ -85,10 +92,11 @@ void attach_generate(CLI::App& mesh_command) {
   auto options = std::make_shared<GenerateOptions>();
   auto* command = mesh_command.add_subcommand(
       "generate", "Build a cell mesh from the icosphere (level 4: 2562 vertices, 5120 triangles)");
-  command->add_option("--shape", options->shape, "Cell shape: " + mesh::cell_shape_names())
-      ->capture_default_str();
-  command->add_option("--subdivisions", options->subdivisions, "Icosphere level (0-7)")
-      ->capture_default_str();
+  command->add_option("--shape", options->shape,
+                      "Cell shape: " + mesh::cell_shape_names() + " (default: --morphology)");
+  command->add_option("--subdivisions", options->subdivisions,
+                      "Icosphere level 0-7 (default: mesh.subdivisions, 4)");
+  add_config_options(command, options->config);
   command->add_option("-o,--output", options->output, "Write the mesh (.stl binary or .vtp)");
   command->add_flag("--json", options->json, "Print the mesh report as JSON on stdout");
   command->callback([options] { run_generate(*options); });
