@@ -169,7 +169,7 @@ TEST(BendingTerm, PaperAndGradientAgreeOnAnEquilateralPairOfEdgeL0) {
 // the `paper` area-difference force vanishes identically on any closed mesh, while the `gradient`
 // one does not (its length derivatives push the cell's area, and hence DeltaA, back).
 TEST(PaperDistribution, AreaDifferenceCancelsOnEveryClosedMesh) {
-  const auto mesh = shapes::biconcave(3);
+  const auto mesh = shapes::discocyte(3);
   const auto positions = shapes::small_deformation(mesh, 21);
   auto parameters = only({"area_difference"});
   parameters.distribution = "paper";
@@ -242,7 +242,7 @@ TEST(MembraneModel, DeviationAtTheLimitIsARuntimeFailureNamingTermAndElement) {
 }
 
 TEST(MembraneModel, ForceCapClampsTheTotalAndCountsEveryHit) {
-  const auto mesh = shapes::biconcave(3);
+  const auto mesh = shapes::discocyte(3);
   MembraneParameters parameters;
   parameters.vertex_force_cap_pN = 0.05;
   const MembraneModel model(mesh, parameters);
@@ -264,7 +264,7 @@ TEST(MembraneModel, ForceCapClampsTheTotalAndCountsEveryHit) {
 }
 
 TEST(MembraneModel, ResultDoesNotDependOnTheThreadCount) {
-  const auto mesh = shapes::biconcave(3);
+  const auto mesh = shapes::discocyte(3);
   const auto positions = shapes::small_deformation(mesh, 11);
   for (const std::string distribution : {"paper", "gradient"}) {
     MembraneParameters parameters;

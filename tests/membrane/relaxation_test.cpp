@@ -1,4 +1,4 @@
-// Overdamped relaxation: a noisy biconcave cell returns to its reference shape.
+// Overdamped relaxation: a noisy discocyte returns to its reference shape.
 #include "membrane/relaxation.hpp"
 
 #include <gtest/gtest.h>
@@ -49,7 +49,7 @@ double max_distance_after_rigid_alignment_um(const std::vector<Vec3>& moved,
 class NoisyCellRelaxes : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(NoisyCellRelaxes, BackToItsReferenceShape) {
-  const auto mesh = shapes::biconcave(3);
+  const auto mesh = shapes::discocyte(3);
   MembraneParameters parameters;  // Table 2 discocyte, all six terms
   parameters.distribution = GetParam();
   const MembraneModel model(mesh, parameters);
@@ -119,7 +119,7 @@ Extents stretched_extents(const MembraneModel& model, const std::vector<Vec3>& r
 // forces the response is linear (doubling the force doubles the extension, up to the cubic
 // corrections of the force law, a few per cent at these strains).
 TEST(Relaxation, ExternalForcesStretchTheCellLinearlyAtSmallForce) {
-  const auto mesh = shapes::biconcave(3);
+  const auto mesh = shapes::discocyte(3);
   const MembraneModel model(mesh, MembraneParameters{});
   const auto at_rest = stretched_extents(model, mesh.positions_um, 0.0);
   const auto pulled = stretched_extents(model, mesh.positions_um, 1.0);

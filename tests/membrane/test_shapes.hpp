@@ -1,8 +1,8 @@
-// Test shapes for the membrane tests, all mapped from the unit icosphere: a sphere, an ellipsoid
-// (axes scaled) and a biconcave disc (the Evans-Fung map). The shipped cell meshes (core/mesh
-// generators) will replace these once they land; until then the test shapes live only here.
+// Test shapes for the membrane tests: a sphere and an ellipsoid mapped from the unit icosphere,
+// and the shipped cell meshes of meshes/.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -11,6 +11,7 @@
 
 #include "common/vec3.hpp"
 #include "mesh/icosphere.hpp"
+#include "mesh/import.hpp"
 #include "mesh/topology.hpp"
 #include "mesh/triangle_mesh.hpp"
 
@@ -28,36 +29,33 @@ inline TriangleMesh sphere(int subdivisions, double radius_um) {
   return ellipsoid(subdivisions, Vec3::Constant(radius_um));
 }
 
-// Evans-Fung discocyte: x, y -> R0 x, R0 y; z -> sign(z) R0/2 sqrt(1 - rho^2) (C0 + C2 rho^2 +
-// C4 rho^4), rho^2 = x^2 + y^2 on the unit sphere (R0 = 3.91 um).
-inline TriangleMesh biconcave(int subdivisions) {
-  constexpr double radius_um = 3.91;
-  constexpr double c0 = 0.207161;
-  constexpr double c2 = 2.002558;
-  constexpr double c4 = -1.122762;
-  auto mesh = mesh::unit_icosphere(subdivisions);
-  for (auto& p : mesh.positions_um) {
-    const double rho2 = std::min(1.0, p.x() * p.x() + p.y() * p.y());
-    const double height =
-        0.5 * radius_um * std::sqrt(1.0 - rho2) * (c0 + c2 * rho2 + c4 * rho2 * rho2);
-    p = Vec3(radius_um * p.x(), radius_um * p.y(),
-             p.z() > 0 ? height : (p.z() < 0 ? -height : 0.0));
-  }
-  return mesh;
+// A shipped cell mesh, meshes/<shape>_n<level>.stl, read through the importer as a user's would be.
+inline TriangleMesh shipped(const std::string& shape, int level) {
+  return mesh::import_mesh(std::string(RBCSIM_SOURCE_DIR) + "/meshes/" + shape + "_n" +
+                           std::to_string(level) + ".stl")
+      .mesh;
 }
+
+inline TriangleMesh discocyte(int level) { return shipped("discocyte", level); }
 
 struct NamedShape {
   std::string name;
   TriangleMesh mesh;
 };
 
-// The property-test shapes: every shape at N = 3, the sphere and biconcave disc also at N = 4.
+// The property-test shapes: a sphere and an ellipsoid (closed-form answers), and every shipped
+// cell mesh at both levels.
 inline std::vector<NamedShape> property_test_shapes() {
-  return {{"sphere3", sphere(3, 3.0)},
-          {"ellipsoid3", ellipsoid(3, Vec3(4.0, 3.0, 2.0))},
-          {"biconcave3", biconcave(3)},
-          {"sphere4", sphere(4, 3.0)},
-          {"biconcave4", biconcave(4)}};
+  std::vector<NamedShape> shapes = {{"sphere3", sphere(3, 3.0)},
+                                    {"ellipsoid3", ellipsoid(3, Vec3(4.0, 3.0, 2.0))}};
+  for (const std::string shape : {"discocyte", "stomatocyte_II", "echinocyte_III"}) {
+    for (const int level : {3, 4}) {
+      auto file_stem = shape;
+      std::replace(file_stem.begin(), file_stem.end(), '_', '-');
+      shapes.push_back({shape + std::to_string(level), shipped(file_stem, level)});
+    }
+  }
+  return shapes;
 }
 
 inline double mean_edge_length_um(const TriangleMesh& mesh) {
