@@ -38,8 +38,11 @@ inline bool axis_periodic(const GridView& grid, int axis) {
 // The stored node number along one axis of lattice coordinate n (which may lie outside the grid):
 // wrapped into [0, extent) on a periodic axis; -1 (no such node) outside [0, extent) otherwise.
 inline int wrap_or_drop(int n, int extent, bool periodic) {
-  if (periodic) return ((n % extent) + extent) % extent;
-  return (n >= 0 && n < extent) ? n : -1;
+  if (n >= 0 && n < extent) return n;
+  if (!periodic) return -1;
+  // Only nodes beyond a periodic face get here: pay for the division then.
+  const int remainder = n % extent;
+  return remainder < 0 ? remainder + extent : remainder;
 }
 
 }  // namespace rbcsim::ibm

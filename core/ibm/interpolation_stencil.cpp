@@ -14,20 +14,26 @@ namespace {
 // Beyond this a coordinate is a runaway point, and its node number would overflow an int.
 constexpr double kMaxCoordinate = 1e9;
 
-// One axis of a point's support: the stored node numbers (-1 = outside a non-periodic grid, with
-// weight 0) and their 1D kernel weights.
+// One axis of a point's support: each node's contribution to the stored node index (its number
+// along the axis times the axis stride) and its 1D kernel weight (0 for a node outside a
+// non-periodic grid).
 struct AxisSupport {
-  std::array<int, kMaxSupportWidth> node{};
+  std::array<std::size_t, kMaxSupportWidth> index_offset{};
   std::array<double, kMaxSupportWidth> weight{};
 };
 
-AxisSupport axis_support(const DeltaKernel& kernel, double coordinate, int extent, bool periodic) {
+AxisSupport axis_support(const DeltaKernel& kernel, double coordinate, int extent, bool periodic,
+                         std::size_t stride) {
   AxisSupport axis;
   const int first = first_node_in_support(kernel, coordinate);
-  for (int slot = 0; slot < kernel.support_width; ++slot) {
-    const int n = first + slot;
-    axis.node[slot] = wrap_or_drop(n, extent, periodic);
-    axis.weight[slot] = axis.node[slot] < 0 ? 0.0 : kernel.weight_1d(coordinate - n);
+  // One modulo per axis: consecutive nodes then wrap by a subtraction (also when the periodic
+  // extent is smaller than the support).
+  int stored = periodic ? wrap_or_drop(first, extent, true) : first;
+  for (int slot = 0; slot < kernel.support_width; ++slot, ++stored) {
+    if (periodic && stored == extent) stored = 0;
+    const bool exists = stored >= 0 && stored < extent;
+    axis.index_offset[slot] = exists ? static_cast<std::size_t>(stored) * stride : 0;
+    axis.weight[slot] = exists ? kernel.weight_1d(coordinate - (first + slot)) : 0.0;
   }
   return axis;
 }
@@ -41,21 +47,23 @@ std::uint8_t fill_point(const DeltaKernel& kernel, const GridView& grid,
                         const std::uint8_t* solid_mask, const Vec3& position, std::size_t* nodes,
                         double* weights) {
   if (!placeable(position)) return 0;
-  std::array<AxisSupport, 3> axes;
-  for (int axis = 0; axis < 3; ++axis) {
-    axes[axis] =
-        axis_support(kernel, position[axis], axis_extent(grid, axis), axis_periodic(grid, axis));
-  }
+  const auto nx = static_cast<std::size_t>(grid.nx);
+  const AxisSupport x = axis_support(kernel, position.x(), grid.nx, grid.periodic_x, 1);
+  const AxisSupport y = axis_support(kernel, position.y(), grid.ny, grid.periodic_y, nx);
+  const AxisSupport z = axis_support(kernel, position.z(), grid.nz, grid.periodic_z,
+                                     nx * static_cast<std::size_t>(grid.ny));
   const int width = kernel.support_width;
   std::uint8_t count = 0;
   double total_weight = 0.0;
   for (int c = 0; c < width; ++c) {
     for (int b = 0; b < width; ++b) {
+      const double weight_yz = y.weight[b] * z.weight[c];
+      if (!(weight_yz > 0.0)) continue;
+      const std::size_t index_offset_yz = y.index_offset[b] + z.index_offset[c];
       for (int a = 0; a < width; ++a) {
-        const double weight = axes[0].weight[a] * axes[1].weight[b] * axes[2].weight[c];
+        const double weight = x.weight[a] * weight_yz;
         if (!(weight > 0.0)) continue;
-        const std::size_t node =
-            node_index(grid, axes[0].node[a], axes[1].node[b], axes[2].node[c]);
+        const std::size_t node = x.index_offset[a] + index_offset_yz;
         if (solid_mask != nullptr && solid_mask[node] != 0) continue;
         nodes[count] = node;
         weights[count] = weight;
