@@ -102,12 +102,17 @@ void InterpolationStencil::build(const DeltaKernel& kernel, const GridView& grid
   node_counts_.resize(point_count);
   nodes_.resize(point_count * slots_per_point_);
   weights_.resize(point_count * slots_per_point_);
+  node_bounds_.resize(point_count);
 
 #pragma omp parallel for schedule(static)
   for (std::size_t point = 0; point < point_count; ++point) {
     const std::size_t first_slot = point * slots_per_point_;
-    node_counts_[point] = fill_point(kernel, grid, solid_mask, positions_lu[point],
-                                     nodes_.data() + first_slot, weights_.data() + first_slot);
+    const std::uint8_t count = fill_point(kernel, grid, solid_mask, positions_lu[point],
+                                          nodes_.data() + first_slot, weights_.data() + first_slot);
+    node_counts_[point] = count;
+    const auto [lowest, highest] =
+        std::minmax_element(nodes_.begin() + first_slot, nodes_.begin() + first_slot + count);
+    node_bounds_[point] = count > 0 ? NodeIndexBounds{*lowest, *highest} : NodeIndexBounds{1, 0};
   }
 
   const auto unplaceable = std::ranges::find(node_counts_, std::uint8_t{0});

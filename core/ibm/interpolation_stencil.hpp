@@ -29,6 +29,12 @@
 
 namespace rbcsim::ibm {
 
+// The smallest and largest stored node index of one point's stencil, so that a thread spreading
+// onto a range of nodes can skip whole points.
+struct NodeIndexBounds {
+  std::size_t lowest, highest;
+};
+
 class InterpolationStencil {
  public:
   // Computes every point's nodes and weights. `solid_mask` (one byte per node, 1 = solid) may be
@@ -47,6 +53,7 @@ class InterpolationStencil {
   std::span<const double> weights(std::size_t point) const {
     return {weights_.data() + point * slots_per_point_, node_counts_[point]};
   }
+  NodeIndexBounds node_bounds(std::size_t point) const { return node_bounds_[point]; }
 
  private:
   GridView grid_{};
@@ -54,6 +61,7 @@ class InterpolationStencil {
   std::vector<std::uint8_t> node_counts_;
   std::vector<std::size_t> nodes_;
   std::vector<double> weights_;
+  std::vector<NodeIndexBounds> node_bounds_;
 };
 
 }  // namespace rbcsim::ibm

@@ -40,6 +40,8 @@ void spread_forces(const InterpolationStencil& stencil, std::span<const Vec3> po
   {
     const NodeRange owned = owned_nodes(node_total);
     for (std::size_t point = 0; point < stencil.point_count(); ++point) {
+      const NodeIndexBounds bounds = stencil.node_bounds(point);
+      if (bounds.highest < owned.begin || bounds.lowest >= owned.end) continue;
       const auto nodes = stencil.nodes(point);
       const auto weights = stencil.weights(point);
       const Vec3& force = point_forces_lu[point];
