@@ -1,6 +1,7 @@
 #include "lattice/fluid_kernel.hpp"
 
 #include "common/errors.hpp"
+#include "lattice/named_variants.hpp"
 #include "lattice/optimised_kernel.hpp"
 #include "lattice/reference_kernel.hpp"
 
@@ -51,15 +52,7 @@ FluidArrays::FluidArrays(std::size_t node_count)
 std::span<const FluidKernelEntry> fluid_kernels() { return kFluidKernels; }
 
 const FluidKernelEntry& find_fluid_kernel(std::string_view name) {
-  std::string known;
-  for (const auto& entry : kFluidKernels) {
-    if (entry.name == name) {
-      return entry;
-    }
-    known += (known.empty() ? "" : ", ") + std::string(entry.name);
-  }
-  throw InputError("lattice.kernel",
-                   "unknown kernel \"" + std::string(name) + "\"; known kernels: " + known);
+  return find_variant<FluidKernelEntry>(kFluidKernels, name, "lattice.kernel", "kernel");
 }
 
 std::unique_ptr<FluidKernel> make_fluid_kernel(std::string_view name, const LatticeSetup& setup) {
