@@ -63,6 +63,18 @@ std::unique_ptr<FluidKernel> make_fluid_kernel(std::string_view name, const Latt
   return entry.make(setup);
 }
 
+WallLinkWeights wall_link_weights(const LatticeSetup& setup, std::size_t node, int direction) {
+  const LatticeGrid& grid = setup.grid;
+  const auto& c = kVelocities[direction];
+  const int behind_y = grid.coordinates(node)[1] + c[1];
+  const bool across_sliding_plane =
+      setup.lees_edwards_velocity && (behind_y < 0 || behind_y >= grid.ny());
+  const bool behind_is_fluid =
+      !across_sliding_plane && setup.boundaries.is_fluid(grid.periodic_neighbour(node, c));
+  return setup.wall_rule->weights(setup.boundaries.wall_fraction(node, kOpposite[direction]),
+                                  behind_is_fluid);
+}
+
 std::vector<double> pre_collision_populations(const LatticeSetup& setup, const FluidArrays& arrays,
                                               std::size_t time) {
   if (arrays.layout == PopulationLayout::natural) {
