@@ -11,7 +11,8 @@ namespace rbcsim::report {
 namespace {
 
 std::string json_type_phrase(const nlohmann::json& value) {
-  if (value.is_number()) return "a number";
+  if (value.is_number_integer()) return "an integer";
+  if (value.is_number()) return "a number with a fraction or an exponent";
   if (value.is_array()) return "an array";
   if (value.is_object()) return "an object";
   if (value.is_null()) return "null";

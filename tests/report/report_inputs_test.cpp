@@ -6,6 +6,7 @@
 #include "report/report.hpp"
 #include "report/run_fixtures.hpp"
 #include "report/xml_document.hpp"
+#include "support/run_rbcsim.hpp"
 #include "support/scratch_directory.hpp"
 
 namespace {
@@ -92,6 +93,20 @@ TEST(ReportInputs, OtherCommandsGetTheirHeadlineNumbers) {
   EXPECT_EQ(parse_xml(documents.html).error, "");
 }
 
+TEST(ReportInputs, RunsThatWouldShareALabelAreToldApartByDirectory) {
+  rbcsim::testing::ScratchDirectory scratch;
+  const auto run = rbcsim::testing::stretch_run(rbcsim::testing::all_terms(), 90, 0.3);
+  const auto first = write_run(scratch.path() / "first", run);
+  const auto second = write_run(scratch.path() / "second", run);
+  const auto page = parse_xml(build_report(read_run_directories({first, second})).html);
+  std::vector<std::string> series;
+  for (const auto i : page.find("g", "series"))
+    series.push_back(page.elements[i].attribute("data-label"));
+  ASSERT_EQ(series.size(), 6u);
+  EXPECT_EQ(series[0], "discocyte, all six, quasi-static (" + first.generic_string() + "), axial");
+  EXPECT_EQ(series[2], "discocyte, all six, quasi-static (" + second.generic_string() + "), axial");
+}
+
 TEST(ReportInputs, TransitOrderDifferentFromThePaperIsSaid) {
   rbcsim::testing::ScratchDirectory scratch;
   const auto documents = build_report(read_run_directories(
@@ -144,6 +159,14 @@ TEST(ReportInputs, ContractViolationsNameTheJsonPath) {
   auto bad_status = rbcsim::testing::calibrate_run();
   bad_status.status = "done";
   const auto status_run = write_run(scratch.path() / "status", bad_status);
+  const auto threads_run = write_run(scratch.path() / "threads", rbcsim::testing::calibrate_run());
+  auto result = nlohmann::json::parse(rbcsim::testing::read_text(threads_run / "result.json"));
+  result["threads"] = 2.5;
+  write_file(threads_run / "result.json", result.dump());
+  EXPECT_EQ(report_error({threads_run}),
+            (threads_run / "result.json").string() +
+                ": /threads: expected an integer, found a number with a fraction or an exponent");
+
   EXPECT_EQ(report_error({status_run}),
             (status_run / "result.json").string() +
                 ": /status: expected \"ok\" or \"failed\", found \"done\"");
