@@ -31,8 +31,7 @@ void run_report(const ReportOptions& options) {
 void attach_report_command(CLI::App& application) {
   auto* command = application.add_subcommand(
       "report",
-      "Self-contained HTML report (inline SVG plots against the reference data, tables, run "
-      "metadata) plus summary.md and summary.json, from run directories");
+      "HTML report of run directories (plots against reference data, tables) + summary.md/.json");
   auto options = std::make_shared<ReportOptions>();
   command
       ->add_option("RUN_DIR", options->run_directories,
