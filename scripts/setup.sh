@@ -9,8 +9,9 @@ repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${1:-$repo_root/build}"
 shift || true
 
+# libexpat1-dev: the tests parse the HTML report and VTK files with a strict XML parser.
 required_packages=(cmake make g++ libcli11-dev libeigen3-dev nlohmann-json3-dev libassimp-dev
-                   libgtest-dev)
+                   libgtest-dev libexpat1-dev)
 
 missing_packages=()
 for package in "${required_packages[@]}"; do
