@@ -63,7 +63,7 @@ struct XyzArrays {
 
 // atan2(y, x) in (-pi, pi], within a few ulp of std::atan2 (tested), branch-free. Reduction:
 // t = min(|x|, |y|) / max(|x|, |y|) in [0, 1]; above tan(pi/8), atan t = pi/4 + atan((t-1)/(t+1)),
-// so the series runs on |u| <= tan(pi/8) (u^2 <= 0.172), where its 21 terms leave a relative
+// so the series runs on |u| <= tan(pi/8) (u^2 <= 0.172), where 21 terms leave a relative
 // truncation error below 1e-18. Then the octant is undone. (0, 0) gives 0.
 inline double atan2(double y, double x) {
   const double ax = std::abs(x);
@@ -75,12 +75,19 @@ inline double atan2(double y, double x) {
   const double ratio = (shifted ? numerator - denominator : numerator) /
                        (shifted ? numerator + denominator : denominator);
   const double u = denominator > 0.0 ? ratio : 0.0;
-  // atan u = u sum_k (-1)^k u^2k / (2k + 1), Horner from k = 20.
+  // atan u = u + u^3 q(u^2), q(s) = sum_{j=0}^{19} (-1)^(j+1) s^j / (2j + 3): the exact leading
+  // term keeps the rounding of q small. q splits into its even and odd powers, two independent
+  // Horner chains in u^4 (half the dependent steps of one chain in u^2).
   const double u2 = u * u;
-  double series = 1.0 / 41.0;
-#pragma GCC unroll 20
-  for (int k = 19; k >= 0; --k) series = 1.0 / (2 * k + 1) - u2 * series;
-  double angle = u * series + (shifted ? std::numbers::pi / 4 : 0.0);
+  const double u4 = u2 * u2;
+  double even = -1.0 / 39.0;  // j = 18
+#pragma GCC unroll 9
+  for (int j = 16; j >= 0; j -= 2) even = -1.0 / (2 * j + 3) + u4 * even;
+  double odd = 1.0 / 41.0;  // j = 19
+#pragma GCC unroll 9
+  for (int j = 17; j >= 1; j -= 2) odd = 1.0 / (2 * j + 3) + u4 * odd;
+  const double q = even + u2 * odd;
+  double angle = (u + (u * u2) * q) + (shifted ? std::numbers::pi / 4 : 0.0);
   angle = swapped ? std::numbers::pi / 2 - angle : angle;
   angle = x < 0.0 ? std::numbers::pi - angle : angle;
   return std::copysign(angle, y);
