@@ -1,8 +1,9 @@
 // The vectorised element passes. Each loop body is plain arithmetic on simd::Xyz (no Eigen, no
 // library calls), its loop is `omp simd`, and this file is compiled with -fno-math-errno
 // -fno-trapping-math (CMakeLists.txt) so that sqrt and the selects of the branch-free atan2 can
-// be widened; neither flag changes a result. Then a scalar loop over the block forms its partial
-// sums in element order.
+// be widened; neither flag changes a result. -ffp-contract=off keeps every operation rounded as
+// written, so the baseline, AVX2 and AVX-512 clones compute the same bits. After each loop a
+// scalar loop over the block forms its partial sums in element order.
 #include "membrane/optimised_passes.hpp"
 
 #include <algorithm>
@@ -46,8 +47,7 @@ enum class Pattern {
   paper,
 };
 
-// K_b = (k_b kBT / L0) h, h = (sqrt 3 / 2) L0 (bending_term.cpp); c = K slope / (2 |S0|) with
-// K / |S0| = sqrt 3 k kBT / L0 (curvature_sum_term.cpp).
+// `gradient`: c = K slope / (2 |S0|) with K / |S0| = sqrt 3 k kBT / L0 (curvature_sum_term.cpp).
 double gradient_cell_scale(double force_scale_pN) { return std::sqrt(3.0) / 2.0 * force_scale_pN; }
 // `paper` pushes with the law's force itself.
 double paper_bend_scale(double force_scale_pN, double) { return force_scale_pN; }
@@ -248,6 +248,7 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_triangle_block(const SlotWeights& weigh
   }
 }
 
+// K_b = (k_b kBT / L0) h, h = (sqrt 3 / 2) L0 (bending_term.cpp).
 double gradient_bend_scale(double force_scale_pN, double length_scale_um) {
   return force_scale_pN * std::sqrt(3.0) / 2.0 * length_scale_um;
 }
