@@ -15,8 +15,11 @@
 namespace rbcsim::membrane {
 namespace {
 
-constexpr int kBatches = 100;
-constexpr double kBatchSeconds = 0.002;
+// Short batches, repeated until a time budget is spent: on a shared machine a short batch more
+// often runs without its threads being preempted, and the fastest batch is the measurement.
+constexpr double kBatchSeconds = 0.0005;
+constexpr double kBudgetSeconds = 0.3;
+constexpr int kMinimumBatches = 5;
 
 // Sets the OpenMP thread count for its lifetime and restores the previous one after.
 class ThreadCountScope {
@@ -57,11 +60,13 @@ double measure_membrane_force_us(int vertex_count_level, int threads, std::strin
     }
     return std::chrono::duration<double>(Clock::now() - start).count();
   };
-  // Warm-up (caches, OpenMP threads), then batches of about kBatchSeconds each.
-  const double first_s = std::max(run(3) / 3.0, 1e-9);
-  const long batch = std::max(1L, static_cast<long>(kBatchSeconds / first_s));
+  run(3);  // warm-up: caches, OpenMP threads
+  double single_s = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 5; ++i) single_s = std::min(single_s, run(1));
+  const long batch = std::max(1L, static_cast<long>(kBatchSeconds / single_s));
   double best_s = std::numeric_limits<double>::infinity();
-  for (int b = 0; b < kBatches; ++b) {
+  const auto deadline = Clock::now() + std::chrono::duration<double>(kBudgetSeconds);
+  for (int b = 0; b < kMinimumBatches || Clock::now() < deadline; ++b) {
     best_s = std::min(best_s, run(batch) / static_cast<double>(batch));
   }
   return best_s * 1e6;

@@ -4,8 +4,8 @@
 //     triangle normals, dihedral angle theta) and writes its four pattern vectors and scalars:
 //     all that bend, area_difference, total_curvature and link need; one over the triangles
 //     writes their normals, area forces and volume shares (optimised_passes.cpp);
-//  2. one thread reduces the cell sums (V, DeltaA, C) over fixed blocks of elements, checks every
-//     limit and turns the cell-level deviations into three coefficients;
+//  2. every thread reduces the cell sums (V, DeltaA, C) over fixed blocks of elements, in the same
+//     order, checks every limit and turns the cell-level deviations into three coefficients;
 //  3. one vectorised pass turns the patterns and coefficients into one force per slot (an
 //     element's share of a vertex's force), and one gather per vertex sums its slots and caps.
 // Every element writes only its own entries and every sum runs in an order fixed by the mesh
@@ -26,6 +26,8 @@
 // |theta| = sign(theta) theta (angle_weight = l, length_weight = theta); `paper` pushes every edge
 // with c_ad and c_tc sign(theta_e) (angle_weight = 1, length_weight = 0). The volume force of a
 // vertex is c_v times the sum of its triangles' normals (volume_term.cpp).
+#include <omp.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -157,6 +159,8 @@ VertexGather make_incidence(const MembraneModel& model) {
 
 // The result of step 2.
 struct CellSummary {
+  CellDeviations cell;
+  std::array<double, kTermCount> max_abs_deviation{};  // per term, enabled or not
   // Index in MembraneForces::terms of the first enabled term (registry order) whose deviation
   // reached its limit, or -1.
   std::ptrdiff_t failed_term = -1;
@@ -212,17 +216,21 @@ class OptimisedKernel final : public MembraneKernel {
     const double* positions_xyz = positions_um.data()->data();
     const auto vertex_count = static_cast<std::ptrdiff_t>(model.vertex_count());
     const double cap_pN = model.parameters().vertex_force_cap_pN;
-    CellSummary summary;
+    CellSummary summary;  // thread 0's, for after the region
     std::size_t capped = 0;
     std::ptrdiff_t first_non_finite = vertex_count;
+    // Three synchronisations: after step 1, after step 3a, and the end of the region (which also
+    // completes the reductions of the `nowait` gather).
 #pragma omp parallel
     {
       measure_elements(positions_xyz, scratch);
-#pragma omp single
-      summary = summarize(model, scratch, forces);
-      if (summary.failed_term < 0) {
-        weigh_slots(summary.weights, scratch);
-#pragma omp for schedule(static) reduction(+ : capped) reduction(min : first_non_finite)
+      // Every thread reduces the same block sums in the same order: the same summary on every
+      // thread, with no thread waiting for another to publish it.
+      const CellSummary cell = summarize(model, scratch);
+      if (omp_get_thread_num() == 0) summary = cell;
+      if (cell.failed_term < 0) {
+        weigh_slots(cell.weights, scratch);
+#pragma omp for schedule(static) nowait reduction(+ : capped) reduction(min : first_non_finite)
         for (std::ptrdiff_t v = 0; v < vertex_count; ++v) {
           Vec3 total_pN = sum_slots(static_cast<std::size_t>(v), scratch.slot_forces_pN);
           bool finite = true;
@@ -231,6 +239,10 @@ class OptimisedKernel final : public MembraneKernel {
           forces.total_pN[static_cast<std::size_t>(v)] = total_pN;
         }
       }
+    }
+    forces.cell = summary.cell;
+    for (std::size_t i = 0; i < enabled_terms_.size(); ++i) {
+      forces.terms[i].max_abs_deviation = summary.max_abs_deviation[enabled_terms_[i]];
     }
     if (summary.failed_term >= 0) {
       report_limit(enabled_terms_[static_cast<std::size_t>(summary.failed_term)], scratch,
@@ -249,10 +261,9 @@ class OptimisedKernel final : public MembraneKernel {
   std::size_t edge_count() const { return hinges_.vertices.size(); }
   std::size_t triangle_count() const { return corners_.corners.size(); }
 
-  // Step 2 (one thread): cell sums, deviations, limit checks, coefficients. Never throws (it
-  // runs inside the parallel region); the caller reports a failed limit.
-  CellSummary summarize(const MembraneModel& model, const OptimisedScratch& scratch,
-                        MembraneForces& forces) const {
+  // Step 2: cell sums, deviations, limit checks, coefficients. Never throws (it runs inside the
+  // parallel region); the caller reports a failed limit.
+  CellSummary summarize(const MembraneModel& model, const OptimisedScratch& scratch) const {
     EdgeBlockSums edges;
     for (const auto& block : scratch.edge_blocks) {
       edges.link_max_abs_deviation =
@@ -268,34 +279,31 @@ class OptimisedKernel final : public MembraneKernel {
           simd::max_magnitude(triangles.area_max_abs_deviation, block.area_max_abs_deviation);
       triangles.volume_um3 += block.volume_um3;
     }
-    forces.cell = cell_deviations(model.reference(), triangles.volume_um3,
-                                  edges.signed_curvature_um, edges.absolute_curvature_um);
-    const std::array<double, kTermCount> max_abs_deviation = {
-        edges.link_max_abs_deviation,          edges.bend_max_abs_deviation,
-        triangles.area_max_abs_deviation,      std::abs(forces.cell.volume),
-        std::abs(forces.cell.area_difference), std::abs(forces.cell.total_curvature)};
-
     CellSummary summary;
+    const auto& cell = summary.cell =
+        cell_deviations(model.reference(), triangles.volume_um3, edges.signed_curvature_um,
+                        edges.absolute_curvature_um);
+    summary.max_abs_deviation = {edges.link_max_abs_deviation,     edges.bend_max_abs_deviation,
+                                 triangles.area_max_abs_deviation, std::abs(cell.volume),
+                                 std::abs(cell.area_difference),   std::abs(cell.total_curvature)};
     for (std::size_t i = 0; i < enabled_terms_.size(); ++i) {
       const Term term = enabled_terms_[i];
-      forces.terms[i].max_abs_deviation = max_abs_deviation[term];
       // `!(|d| < tau)` also catches NaN.
-      if (summary.failed_term < 0 && !(max_abs_deviation[term] < constants_.tau[term])) {
+      if (!(summary.max_abs_deviation[term] < constants_.tau[term])) {
         summary.failed_term = static_cast<std::ptrdiff_t>(i);
+        return summary;
       }
     }
-    if (summary.failed_term >= 0) return summary;
     const auto& enabled = constants_.enabled;
-    summary.weights = {1.0,
-                       1.0,
-                       1.0,
-                       enabled[kVolume] ? -constants_.volume.coefficient(forces.cell.volume) : 0.0,
-                       enabled[kAreaDifference]
-                           ? constants_.area_difference.coefficient(forces.cell.area_difference)
-                           : 0.0,
-                       enabled[kTotalCurvature]
-                           ? constants_.total_curvature.coefficient(forces.cell.total_curvature)
-                           : 0.0};
+    summary.weights = {
+        1.0,
+        1.0,
+        1.0,
+        enabled[kVolume] ? -constants_.volume.coefficient(cell.volume) : 0.0,
+        enabled[kAreaDifference] ? constants_.area_difference.coefficient(cell.area_difference)
+                                 : 0.0,
+        enabled[kTotalCurvature] ? constants_.total_curvature.coefficient(cell.total_curvature)
+                                 : 0.0};
     return summary;
   }
 
