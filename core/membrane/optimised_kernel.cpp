@@ -226,10 +226,10 @@ class OptimisedKernel final : public MembraneKernel {
       measure_elements(positions_xyz, scratch);
       // Every thread reduces the same block sums in the same order: the same summary on every
       // thread, with no thread waiting for another to publish it.
-      const CellSummary cell = summarize(model, scratch);
-      if (omp_get_thread_num() == 0) summary = cell;
-      if (cell.failed_term < 0) {
-        weigh_slots(cell.weights, scratch);
+      const CellSummary own_summary = summarize(model, scratch);
+      if (omp_get_thread_num() == 0) summary = own_summary;
+      if (own_summary.failed_term < 0) {
+        weigh_slots(own_summary.weights, scratch);
 #pragma omp for schedule(static) nowait reduction(+ : capped) reduction(min : first_non_finite)
         for (std::ptrdiff_t v = 0; v < vertex_count; ++v) {
           Vec3 total_pN = sum_slots(static_cast<std::size_t>(v), scratch.slot_forces_pN);
@@ -280,9 +280,9 @@ class OptimisedKernel final : public MembraneKernel {
       triangles.volume_um3 += block.volume_um3;
     }
     CellSummary summary;
-    const auto& cell = summary.cell =
-        cell_deviations(model.reference(), triangles.volume_um3, edges.signed_curvature_um,
-                        edges.absolute_curvature_um);
+    summary.cell = cell_deviations(model.reference(), triangles.volume_um3,
+                                   edges.signed_curvature_um, edges.absolute_curvature_um);
+    const auto& cell = summary.cell;
     summary.max_abs_deviation = {edges.link_max_abs_deviation,     edges.bend_max_abs_deviation,
                                  triangles.area_max_abs_deviation, std::abs(cell.volume),
                                  std::abs(cell.area_difference),   std::abs(cell.total_curvature)};
