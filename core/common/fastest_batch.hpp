@@ -16,9 +16,11 @@ struct BatchTiming {
   double minimum_duration_s = 0.25;  // keep timing batches until this much time has passed
 };
 
-// Seconds per call of `call()` in the fastest batch.
-template <typename Call>
-double fastest_batch_seconds_per_call(const Call& call, const BatchTiming& timing = {}) {
+// Seconds per call of `call()` in the fastest batch. `after_batch(bool fastest_so_far)` runs after
+// each batch, outside the timed region (to read or reset what the calls accumulated).
+template <typename Call, typename AfterBatch = void (*)(bool)>
+double fastest_batch_seconds_per_call(
+    const Call& call, const BatchTiming& timing = {}, const AfterBatch& after_batch = [](bool) {}) {
   using Clock = std::chrono::steady_clock;
   using Seconds = std::chrono::duration<double>;
   const auto start = Clock::now();
@@ -27,7 +29,10 @@ double fastest_batch_seconds_per_call(const Call& call, const BatchTiming& timin
   do {
     const auto batch_start = Clock::now();
     for (int k = 0; k < timing.calls_per_batch; ++k) call();
-    fastest_batch_s = std::min(fastest_batch_s, Seconds(Clock::now() - batch_start).count());
+    const double batch_s = Seconds(Clock::now() - batch_start).count();
+    const bool fastest = batch_s < fastest_batch_s;
+    fastest_batch_s = std::min(fastest_batch_s, batch_s);
+    after_batch(fastest);
     ++batches;
   } while (batches < timing.minimum_batches ||
            Seconds(Clock::now() - start).count() < timing.minimum_duration_s);

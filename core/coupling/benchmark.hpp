@@ -40,8 +40,8 @@ double measure_triad_bandwidth_GB_per_s(std::size_t elements, int threads);
 struct CoupledStepTiming {
   std::size_t vertex_count = 0;
   double ms_per_step = 0.0;  // the fastest batch
-  // Mean time per step of each phase over every timed step, ms (includes interference).
-  StepPhaseTimes phase_ms_per_step;
+  // Seconds spent in each phase during that batch of fastest_batch_phases.steps steps.
+  StepPhaseTimes fastest_batch_phases;
 };
 
 // One cell (`cell_mesh`, its own stress-free reference, centred in the box) in a periodic box of
