@@ -9,8 +9,9 @@ repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${1:-$repo_root/build}"
 shift || true
 
+# libxml2-dev: the coupling tests read the VTK output back with a real XML parser.
 required_packages=(cmake make g++ libcli11-dev libeigen3-dev nlohmann-json3-dev libassimp-dev
-                   libgtest-dev)
+                   libgtest-dev libxml2-dev)
 
 missing_packages=()
 for package in "${required_packages[@]}"; do
