@@ -15,7 +15,9 @@
 namespace rbcsim::coupling {
 
 struct StabilityLimits {
-  double max_vertex_step_lu = 0.5;  // largest displacement of a vertex in one step
+  // Largest displacement of a vertex in one step: half a spacing (DESIGN.md §6). Beyond it the
+  // stencils of consecutive steps barely overlap and the vertex no longer follows the flow.
+  double max_vertex_step_lu = 0.5;
   // A step is "capped" for a cell when more than this fraction of its vertices hit the membrane's
   // force cap; more than force_cap_max_steps capped steps in a row stop the run.
   double force_cap_vertex_fraction = 0.01;
