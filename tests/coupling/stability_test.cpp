@@ -148,6 +148,27 @@ TEST(Instability, CellThatDoesNotFitTheDomainIsBadInput) {
   }
 }
 
+TEST(Instability, UnderLeesEdwardsACellMayNotReachTheSlidingPlane) {
+  // The images above and below slide, so y is not periodic for the IBM: a cell across y = 0 does
+  // not fit, one inside does.
+  lattice::FluidParameters sliding;
+  sliding.lees_edwards_velocity = 0.01;
+  CoupledSimulation simulation(
+      std::make_unique<lattice::FluidSolver>(lattice::LatticeGrid(12, 12, 12), sliding),
+      plasma_units(), {});
+  EXPECT_FALSE(simulation.grid_view().periodic_y);
+  EXPECT_TRUE(simulation.grid_view().periodic_x && simulation.grid_view().periodic_z);
+  const auto across = sphere_mesh(1, 1.0, Vec3(3.0, 0.2, 3.0));
+  EXPECT_THROW(simulation.add_cell(membrane::MembraneModel(across, membrane::MembraneParameters{}),
+                                   across.positions_um),
+               InputError);
+  const auto inside = sphere_mesh(1, 1.0, Vec3(3.0, 3.0, 3.0));
+  EXPECT_EQ(simulation.add_cell(membrane::MembraneModel(inside, membrane::MembraneParameters{}),
+                                inside.positions_um),
+            0u);
+  simulation.step();
+}
+
 TEST(StabilityChecks, VertexMotionProblems) {
   const std::vector<Vec3> previous = {Vec3(1, 1, 1), Vec3(2, 2, 2)};
   const std::vector<Vec3> slow = {Vec3(0.1, 0, 0), Vec3(0, 0.1, 0)};
