@@ -1,14 +1,11 @@
 #include "ibm/benchmark.hpp"
 
-#include <omp.h>
-
-#include <algorithm>
-#include <chrono>
-#include <limits>
 #include <random>
 #include <stdexcept>
 #include <vector>
 
+#include "common/fastest_batch.hpp"
+#include "common/thread_count_scope.hpp"
 #include "common/vec3.hpp"
 #include "ibm/interpolation_stencil.hpp"
 #include "ibm/point_advance.hpp"
@@ -17,12 +14,6 @@
 namespace rbcsim::ibm {
 namespace {
 
-// Steps are timed in short batches and the fastest batch counts: on a machine shared with other
-// processes the mean mostly measures them (one descheduled thread stalls an OpenMP barrier for a
-// whole time slice), while the fastest batch approaches the code's own cost.
-constexpr double kMinimumDuration_s = 0.25;
-constexpr int kMinimumBatches = 3;
-constexpr int kStepsPerBatch = 5;
 // Small enough that points stay inside a non-periodic grid over the whole measurement.
 constexpr double kMaxVelocity_lu = 1e-5;
 
@@ -55,20 +46,6 @@ BenchmarkCase random_case(std::size_t point_count, const GridView& grid) {
   return bench;
 }
 
-// Sets the OpenMP thread count for its lifetime, then restores the previous one.
-class ThreadCountScope {
- public:
-  explicit ThreadCountScope(int threads) : previous_threads_(omp_get_max_threads()) {
-    omp_set_num_threads(threads);
-  }
-  ~ThreadCountScope() { omp_set_num_threads(previous_threads_); }
-  ThreadCountScope(const ThreadCountScope&) = delete;
-  ThreadCountScope& operator=(const ThreadCountScope&) = delete;
-
- private:
-  int previous_threads_;
-};
-
 void ibm_step(BenchmarkCase& bench, InterpolationStencil& stencil, const GridView& grid,
               const DeltaKernel& kernel) {
   stencil.build(kernel, grid, bench.positions);
@@ -90,19 +67,7 @@ double measure_ibm_step_us(std::size_t point_count, const GridView& grid, const 
   InterpolationStencil stencil;
   ibm_step(bench, stencil, grid, kernel);  // warm-up: sizes the stencil's storage
 
-  using Clock = std::chrono::steady_clock;
-  using Seconds = std::chrono::duration<double>;
-  const auto start = Clock::now();
-  double fastest_batch_s = std::numeric_limits<double>::infinity();
-  int batches = 0;
-  do {
-    const auto batch_start = Clock::now();
-    for (int step = 0; step < kStepsPerBatch; ++step) ibm_step(bench, stencil, grid, kernel);
-    fastest_batch_s = std::min(fastest_batch_s, Seconds(Clock::now() - batch_start).count());
-    ++batches;
-  } while (batches < kMinimumBatches || Seconds(Clock::now() - start).count() < kMinimumDuration_s);
-
-  return 1e6 * fastest_batch_s / kStepsPerBatch;
+  return 1e6 * fastest_batch_seconds_per_call([&] { ibm_step(bench, stencil, grid, kernel); });
 }
 
 }  // namespace rbcsim::ibm
