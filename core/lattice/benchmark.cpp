@@ -2,7 +2,7 @@
 
 #include "lattice/fluid_solver.hpp"
 
-#include <omp.h>
+#include "common/thread_count_scope.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -33,13 +33,11 @@ double kernel_mlups(const LatticeGrid& grid, const char* kernel, std::size_t ste
 }  // namespace
 
 FluidThroughput measure_fluid_mlups(int nx, int ny, int nz, std::size_t steps, int threads) {
-  const int previous_threads = omp_get_max_threads();
-  omp_set_num_threads(threads);
+  const ThreadCountScope thread_count(threads);
   const LatticeGrid grid(nx, ny, nz);
   FluidThroughput throughput;
   throughput.optimised_mlups = kernel_mlups(grid, "optimised", steps);
   throughput.reference_mlups = kernel_mlups(grid, "reference", steps);
-  omp_set_num_threads(previous_threads);
   return throughput;
 }
 

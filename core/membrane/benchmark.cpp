@@ -1,39 +1,23 @@
 #include "membrane/benchmark.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
-#include <chrono>
-#include <limits>
 #include <string>
 #include <vector>
 
 #include "common/errors.hpp"
+#include "common/fastest_batch.hpp"
+#include "common/thread_count_scope.hpp"
 #include "membrane/membrane_model.hpp"
 #include "mesh/cell_shapes.hpp"
 
 namespace rbcsim::membrane {
 namespace {
 
-// Short batches, repeated until a time budget is spent: on a shared machine a short batch more
-// often runs without its threads being preempted, and the fastest batch is the measurement.
+// Batches of about 0.5 ms, timed for at least 0.3 s: on a shared machine a short batch more often
+// runs without its threads being preempted, and the fastest batch is the measurement.
 constexpr double kBatchSeconds = 0.0005;
 constexpr double kBudgetSeconds = 0.3;
 constexpr int kMinimumBatches = 5;
-
-// Sets the OpenMP thread count for its lifetime and restores the previous one after.
-class ThreadCountScope {
- public:
-  explicit ThreadCountScope(int threads) : previous_(omp_get_max_threads()) {
-    omp_set_num_threads(threads);
-  }
-  ~ThreadCountScope() { omp_set_num_threads(previous_); }
-  ThreadCountScope(const ThreadCountScope&) = delete;
-  ThreadCountScope& operator=(const ThreadCountScope&) = delete;
-
- private:
-  int previous_;
-};
 
 }  // namespace
 
@@ -52,23 +36,17 @@ double measure_membrane_force_us(int vertex_count_level, int threads, std::strin
   const ThreadCountScope scope(threads);
   auto workspace = model.make_workspace();
   auto forces = model.make_forces();
-  using Clock = std::chrono::steady_clock;
-  const auto run = [&](long evaluations) {
-    const auto start = Clock::now();
-    for (long i = 0; i < evaluations; ++i) {
-      model.compute(positions_um, workspace, forces, ForceDetail::totals);
-    }
-    return std::chrono::duration<double>(Clock::now() - start).count();
+  const auto evaluate = [&] {
+    model.compute(positions_um, workspace, forces, ForceDetail::totals);
   };
-  run(3);  // warm-up: caches, OpenMP threads
-  double single_s = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < 5; ++i) single_s = std::min(single_s, run(1));
-  const long batch = std::max(1L, static_cast<long>(kBatchSeconds / single_s));
-  double best_s = std::numeric_limits<double>::infinity();
-  const auto deadline = Clock::now() + std::chrono::duration<double>(kBudgetSeconds);
-  for (int b = 0; b < kMinimumBatches || Clock::now() < deadline; ++b) {
-    best_s = std::min(best_s, run(batch) / static_cast<double>(batch));
-  }
+  // Warm-up (caches, OpenMP threads), then a single-call estimate sizes the batches.
+  const double single_s = fastest_batch_seconds_per_call(
+      evaluate, {.calls_per_batch = 1, .minimum_batches = 5, .minimum_duration_s = 0.0});
+  const int batch = std::max(1, static_cast<int>(kBatchSeconds / single_s));
+  const double best_s =
+      fastest_batch_seconds_per_call(evaluate, {.calls_per_batch = batch,
+                                                .minimum_batches = kMinimumBatches,
+                                                .minimum_duration_s = kBudgetSeconds});
   return best_s * 1e6;
 }
 
