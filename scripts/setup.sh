@@ -9,8 +9,10 @@ repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${1:-$repo_root/build}"
 shift || true
 
+# libexpat1-dev / libxml2-dev: the report and coupling tests read their HTML and VTK output back
+# with strict XML parsers.
 required_packages=(cmake make g++ libcli11-dev libeigen3-dev nlohmann-json3-dev libassimp-dev
-                   libgtest-dev)
+                   libgtest-dev libexpat1-dev libxml2-dev)
 
 missing_packages=()
 for package in "${required_packages[@]}"; do

@@ -138,7 +138,7 @@ membrane::RelaxationResult relax_membrane_fire(const membrane::MembraneModel& mo
       fire.rescale(result.stiffest_mode_pN_per_um);
     }
     try {
-      model.compute(positions_um, workspace, forces);
+      model.compute(positions_um, workspace, forces, membrane::ForceDetail::totals);
     } catch (const RuntimeFailure&) {
       if (!fire.retreat(previous_um, positions_um)) throw;
       stiffness_outdated = true;  // near a singular limit the stiffness grows without bound

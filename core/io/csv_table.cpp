@@ -2,80 +2,111 @@
 
 #include <algorithm>
 #include <charconv>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "io/atomic_file.hpp"
+#include "io/text_file.hpp"
 
 namespace rbcsim::io {
 namespace {
 
-std::string_view trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(" \t\r");
-  return text.substr(first, last - first + 1);
+// The fields of one line. A quoted field runs to its closing quote; "" inside it is a quote.
+std::vector<std::string> split_fields(std::string_view line, const std::string& source,
+                                      std::size_t line_number) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c != '"') {
+        fields.back() += c;
+      } else if (i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else {
+        quoted = false;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  if (quoted) {
+    throw InputError(source, "line " + std::to_string(line_number) + ": unterminated quote");
+  }
+  return fields;
 }
 
-std::vector<std::string> split_fields(std::string_view line) {
-  std::vector<std::string> fields;
-  for (std::size_t start = 0;;) {
-    const auto comma = line.find(',', start);
-    fields.emplace_back(trimmed(line.substr(start, comma - start)));
-    if (comma == std::string_view::npos) return fields;
-    start = comma + 1;
+std::string_view trim(std::string_view text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+}
+
+// Accepts what std::from_chars reads in full ("1.5", "-2e-19", "nan", "inf") and the JSON words
+// true/false, which some writers use for flags such as `converged`.
+bool parse_number(std::string_view text, double& value) {
+  text = trim(text);
+  if (text == "true" || text == "false") {
+    value = text == "true" ? 1.0 : 0.0;
+    return true;
   }
+  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
+  return !text.empty() && result.ec == std::errc() && result.ptr == text.data() + text.size();
 }
 
 }  // namespace
 
-CsvTable CsvTable::parse(std::string_view text, std::string_view source) {
+CsvTable CsvTable::parse(std::string_view text, std::string source) {
   CsvTable table;
-  table.source_ = source;
+  table.source_ = std::move(source);
   std::size_t line_number = 0;
-  for (std::size_t start = 0; start < text.size();) {
-    const auto end = std::min(text.find('\n', start), text.size());
-    const auto line = trimmed(text.substr(start, end - start));
-    start = end + 1;
+  while (!text.empty()) {
+    const auto end = text.find('\n');
+    const auto line = trim(text.substr(0, end));
+    text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
     ++line_number;
     if (line.empty() || line.front() == '#') continue;
-    auto fields = split_fields(line);
-    if (table.header_.empty()) {
-      table.header_ = std::move(fields);
+    auto fields = split_fields(line, table.source_, line_number);
+    for (auto& field : fields) field = std::string(trim(field));
+    if (table.column_names_.empty()) {
+      table.column_names_ = std::move(fields);
       continue;
     }
-    if (fields.size() != table.header_.size()) {
-      throw InputError(table.source_, "line " + std::to_string(line_number) + ": " +
-                                          std::to_string(fields.size()) + " fields, the header has " +
-                                          std::to_string(table.header_.size()));
+    if (fields.size() != table.column_names_.size()) {
+      throw InputError(table.source_, "line " + std::to_string(line_number) + " has " +
+                                          std::to_string(fields.size()) + " fields, the header " +
+                                          std::to_string(table.column_names_.size()));
     }
-    table.rows_.push_back(std::move(fields));
-    table.row_lines_.push_back(line_number);
+    table.rows_.push_back({line_number, std::move(fields)});
   }
-  if (table.header_.empty()) throw InputError(table.source_, "no header row");
+  if (table.column_names_.empty()) throw InputError(table.source_, "no header row");
   return table;
 }
 
 bool CsvTable::has_column(std::string_view name) const {
-  return std::find(header_.begin(), header_.end(), name) != header_.end();
+  return std::find(column_names_.begin(), column_names_.end(), name) != column_names_.end();
 }
 
-std::vector<double> CsvTable::numbers(std::string_view column) const {
-  const auto found = std::find(header_.begin(), header_.end(), column);
-  if (found == header_.end()) throw InputError(source_, "no column " + in_quotes(column));
-  const auto index = static_cast<std::size_t>(found - header_.begin());
+std::vector<double> CsvTable::numbers(std::string_view column_name) const {
+  const auto column = std::find(column_names_.begin(), column_names_.end(), column_name);
+  if (column == column_names_.end()) {
+    throw InputError(source_, "no column " + in_quotes(column_name));
+  }
+  const auto index = static_cast<std::size_t>(column - column_names_.begin());
   std::vector<double> values;
   values.reserve(rows_.size());
-  for (std::size_t row = 0; row < rows_.size(); ++row) {
-    const auto& field = rows_[row][index];
-    double value = 0.0;
-    const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
-    if (error != std::errc() || end != field.data() + field.size()) {
-      throw InputError(source_, "line " + std::to_string(row_lines_[row]) + ", column " +
-                                    in_quotes(column) + ": " + in_quotes(field) +
+  for (const auto& row : rows_) {
+    double value = 0;
+    if (!parse_number(row.fields[index], value)) {
+      throw InputError(source_, "line " + std::to_string(row.line) + ", column " +
+                                    in_quotes(column_name) + ": " + in_quotes(row.fields[index]) +
                                     " is not a number");
     }
     values.push_back(value);
@@ -83,12 +114,8 @@ std::vector<double> CsvTable::numbers(std::string_view column) const {
   return values;
 }
 
-CsvTable read_csv_file(const std::filesystem::path& path) {
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream) throw InputError(path.string(), "cannot read the file");
-  std::stringstream text;
-  text << stream.rdbuf();
-  return CsvTable::parse(text.str(), path.string());
+CsvTable read_csv_file(const std::filesystem::path& file) {
+  return CsvTable::parse(read_text_file(file), file.string());
 }
 
 void write_csv_file(const std::filesystem::path& path, std::span<const std::string> columns,

@@ -1,10 +1,11 @@
-// CSV files with a header row (the run directories' tables, the reference data of share/).
-// Lines starting with '#' are comments (the reference files' provenance) and blank lines are
-// skipped; fields are separated by commas without quoting (no field of ours holds a comma).
-// Numbers are written in their shortest round-trip form, so a table reads back exactly.
+// CSV files of the run-directory contract (stretch.csv, shear.csv, capillary_timeseries.csv) and
+// of share/reference: a header row with the unit in each column name, then one row per record.
+// The experiment commands write them (write_csv_file), `rbcsim report` and the stretch
+// comparison read them.
+// Lines starting with '#' are provenance comments (share/reference keeps its sources there) and
+// are skipped, as are blank lines. Fields may be double-quoted ("a, b", "say ""hi""").
 #pragma once
 
-#include <cstddef>
 #include <filesystem>
 #include <span>
 #include <string>
@@ -15,29 +16,35 @@ namespace rbcsim::io {
 
 class CsvTable {
  public:
-  // Throws InputError(source, "line N: ...") for a missing header or a row whose field count
+  // Throws InputError("SOURCE", "line N: ...") for a missing header or a row whose field count
   // differs from the header's.
-  static CsvTable parse(std::string_view text, std::string_view source);
+  static CsvTable parse(std::string_view text, std::string source);
 
-  const std::vector<std::string>& header() const { return header_; }
-  std::size_t row_count() const { return rows_.size(); }
+  const std::vector<std::string>& column_names() const { return column_names_; }
   bool has_column(std::string_view name) const;
-  // The column's fields as numbers. Throws InputError(source, ...) for a missing column or a
-  // field that is not a number, naming the line.
-  std::vector<double> numbers(std::string_view column) const;
+  std::size_t row_count() const { return rows_.size(); }
+
+  // The column as numbers. Throws InputError naming the source if the column is missing or a
+  // cell is not a number (the message gives the line and the cell).
+  std::vector<double> numbers(std::string_view column_name) const;
 
  private:
+  struct Row {
+    std::size_t line;  // 1-based line in the source, for diagnostics
+    std::vector<std::string> fields;
+  };
+
   std::string source_;
-  std::vector<std::string> header_;
-  std::vector<std::vector<std::string>> rows_;
-  std::vector<std::size_t> row_lines_;  // the line number of each row, for diagnostics
+  std::vector<std::string> column_names_;
+  std::vector<Row> rows_;
 };
 
-// Reads a file; the path is the source of every diagnostic. Throws InputError if unreadable.
-CsvTable read_csv_file(const std::filesystem::path& path);
+// read_text_file + CsvTable::parse, the file being the source of every diagnostic.
+CsvTable read_csv_file(const std::filesystem::path& file);
 
-// Writes a header row and rows of numbers, atomically (atomic_file.hpp). Each row must have one
-// value per column (std::invalid_argument otherwise).
+// A header row and rows of numbers in their shortest round-trip form (format_number), written
+// atomically (atomic_file.hpp), so a table reads back exactly. Each row must have one value per
+// column (std::invalid_argument otherwise).
 void write_csv_file(const std::filesystem::path& path, std::span<const std::string> columns,
                     std::span<const std::vector<double>> rows);
 

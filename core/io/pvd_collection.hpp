@@ -1,5 +1,5 @@
-// ParaView collection files (.pvd): one entry per saved dataset with its "timestep" value, so a
-// sweep (force, shear rate) or a time series opens as one animated dataset.
+// ParaView collection files (.pvd): one entry per saved data set with its "timestep" value, so a
+// time series (or a sweep over force or shear rate) opens as one animated data set.
 #pragma once
 
 #include <filesystem>
@@ -9,11 +9,12 @@
 namespace rbcsim::io {
 
 struct PvdEntry {
-  double timestep = 0.0;  // the sweep parameter or the time: what ParaView's time slider shows
+  double timestep = 0.0;  // the time or the sweep parameter: what ParaView's time slider shows
   std::string file;       // path relative to the .pvd file
 };
 
-// Through write_file_atomically. Throws std::invalid_argument for a file name with XML markup.
+// Through write_file_atomically. Throws std::invalid_argument for an empty file name or one with
+// XML markup characters.
 void write_pvd_collection(const std::filesystem::path& path, std::span<const PvdEntry> entries);
 
 }  // namespace rbcsim::io

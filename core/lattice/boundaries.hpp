@@ -12,6 +12,14 @@
 //                     between x and x - c_i. A velocity inlet is a wall whose velocity points into
 //                     the fluid (the bounce-back-with-velocity inlet), with one velocity per node
 //                     so that a Poiseuille profile can be imposed.
+//   curved wall       interpolated bounce-back, chosen by name (`lattice.wall_rule`, one table,
+//                     wall_rules()) for walls that cut the link x - c_i -> x at a fraction q of
+//                     its length from x (wall_link.hpp; q = 1/2 unless set). Every rule of the
+//                     table is a member of the linear family (Ginzburg & d'Humieres, Phys. Rev. E
+//                     68, 066614 (2003)); with h = opp(i) the direction that hits the wall,
+//                       f_i(x) = k_here f*_h(x) + k_away f*_i(x) + k_behind f*_h(x + c_i)
+//                                + k_wall 2 w_i rho(x) c_i.u_w / c_s^2,
+//                     all at the previous time step; half-way bounce-back is (1, 0, 0, 1).
 //   pressure outlet   anti-bounce-back at a given density (Ginzburg, Verhaeghe & d'Humieres,
 //                     Commun. Comput. Phys. 3, 427 (2008); Krueger et al., "The Lattice
 //                     Boltzmann Method", 2017, ch. 5):
@@ -23,10 +31,13 @@
 #pragma once
 
 #include "lattice/d3q19.hpp"
+#include "lattice/wall_link.hpp"
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
+#include <string_view>
 #include <unordered_map>
 #include <vector>
 
@@ -52,10 +63,16 @@ class BoundaryMap {
   std::array<double, 3> wall_velocity(std::size_t node) const;
   double outlet_density(std::size_t node) const;
 
+  // Where the wall cuts the link from fluid node `link.node` along c_direction (WallLink). Links
+  // never set are cut half-way, q = 1/2. The caller checks the link (FluidSolver::set_wall_links).
+  void set_wall_fraction(const WallLink& link);
+  double wall_fraction(std::size_t node, int direction) const;
+
  private:
   std::vector<std::uint8_t> kinds_;
   std::unordered_map<std::size_t, std::array<double, 3>> wall_velocity_;
   std::unordered_map<std::size_t, double> outlet_density_;
+  std::unordered_map<std::size_t, double> wall_fraction_;  // key: node * kDirections + direction
 };
 
 // 2 w_i c_i.u_w / c_s^2: the moving-wall term of the bounce-back rule, per unit density.
@@ -68,6 +85,39 @@ constexpr double wall_momentum_coefficient(int direction,
 constexpr double bounce_back(double reflected, double density, double wall_coefficient) {
   return reflected + density * wall_coefficient;
 }
+
+// The coefficients of one wall link in the linear family above.
+struct WallLinkWeights {
+  double here = 1.0;    // of f*_h(x), the population that hits the wall
+  double away = 0.0;    // of f*_i(x), the population leaving the wall
+  double behind = 0.0;  // of f*_h(x + c_i), the one hitting the wall from the next fluid node
+  double wall = 1.0;    // of the moving-wall term 2 w_i rho(x) c_i.u_w / c_s^2
+  friend constexpr bool operator==(const WallLinkWeights&, const WallLinkWeights&) = default;
+};
+
+inline constexpr WallLinkWeights kHalfwayWeights{};
+
+// The part of an interpolated bounce-back that only needs the node itself. Kernels add
+// weights.behind * f*_h(x + c_i) to it, so that the optimised kernel can add it once the
+// neighbour's population is in place.
+constexpr double wall_link_local_part(const WallLinkWeights& weights, double hitting,
+                                      double leaving, double density, double wall_coefficient) {
+  return weights.here * hitting + weights.away * leaving +
+         weights.wall * density * wall_coefficient;
+}
+
+// A rule of `lattice.wall_rule`: the weights of a link cut at fraction q, given whether the next
+// node x + c_i is plain fluid (not a boundary and not across a sliding plane).
+struct WallRule {
+  std::string_view name;
+  std::string_view summary;
+  WallLinkWeights (*weights)(double fraction, bool behind_is_fluid);
+};
+
+std::span<const WallRule> wall_rules();
+
+// Throws rbcsim::InputError naming `lattice.wall_rule` (and the known names) for an unknown rule.
+const WallRule& find_wall_rule(std::string_view name);
 
 constexpr double anti_bounce_back(int direction, double reflected, double outlet_density,
                                   const std::array<double, 3>& velocity) {

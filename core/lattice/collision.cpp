@@ -1,6 +1,7 @@
 #include "lattice/collision.hpp"
 
 #include "common/errors.hpp"
+#include "lattice/named_variants.hpp"
 
 #include <array>
 #include <string>
@@ -24,14 +25,6 @@ constexpr std::array kCollisionModels = {
     CollisionModel{"trt", "two relaxation times with magic parameter Lambda", trt_rates},
 };
 
-std::string known_model_names() {
-  std::string names;
-  for (const auto& model : kCollisionModels) {
-    names += (names.empty() ? "" : ", ") + std::string(model.name);
-  }
-  return names;
-}
-
 }  // namespace
 
 std::span<const CollisionModel> collision_models() { return kCollisionModels; }
@@ -45,13 +38,8 @@ RelaxationRates relaxation_rates(std::string_view model, const CollisionParamete
     throw InputError("lattice.magic_parameter",
                      "must be positive, got " + std::to_string(parameters.magic_parameter));
   }
-  for (const auto& entry : kCollisionModels) {
-    if (entry.name == model) {
-      return entry.rates(parameters);
-    }
-  }
-  throw InputError("lattice.collision", "unknown model \"" + std::string(model) +
-                                            "\"; known models: " + known_model_names());
+  return find_variant<CollisionModel>(kCollisionModels, model, "lattice.collision", "model")
+      .rates(parameters);
 }
 
 }  // namespace rbcsim::lattice

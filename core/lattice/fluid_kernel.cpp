@@ -1,6 +1,7 @@
 #include "lattice/fluid_kernel.hpp"
 
 #include "common/errors.hpp"
+#include "lattice/named_variants.hpp"
 #include "lattice/optimised_kernel.hpp"
 #include "lattice/reference_kernel.hpp"
 
@@ -51,15 +52,7 @@ FluidArrays::FluidArrays(std::size_t node_count)
 std::span<const FluidKernelEntry> fluid_kernels() { return kFluidKernels; }
 
 const FluidKernelEntry& find_fluid_kernel(std::string_view name) {
-  std::string known;
-  for (const auto& entry : kFluidKernels) {
-    if (entry.name == name) {
-      return entry;
-    }
-    known += (known.empty() ? "" : ", ") + std::string(entry.name);
-  }
-  throw InputError("lattice.kernel",
-                   "unknown kernel \"" + std::string(name) + "\"; known kernels: " + known);
+  return find_variant<FluidKernelEntry>(kFluidKernels, name, "lattice.kernel", "kernel");
 }
 
 std::unique_ptr<FluidKernel> make_fluid_kernel(std::string_view name, const LatticeSetup& setup) {
@@ -68,6 +61,18 @@ std::unique_ptr<FluidKernel> make_fluid_kernel(std::string_view name, const Latt
     check_lees_edwards_planes(setup);
   }
   return entry.make(setup);
+}
+
+WallLinkWeights wall_link_weights(const LatticeSetup& setup, std::size_t node, int direction) {
+  const LatticeGrid& grid = setup.grid;
+  const auto& c = kVelocities[direction];
+  const int behind_y = grid.coordinates(node)[1] + c[1];
+  const bool across_sliding_plane =
+      setup.lees_edwards_velocity && (behind_y < 0 || behind_y >= grid.ny());
+  const bool behind_is_fluid =
+      !across_sliding_plane && setup.boundaries.is_fluid(grid.periodic_neighbour(node, c));
+  return setup.wall_rule->weights(setup.boundaries.wall_fraction(node, kOpposite[direction]),
+                                  behind_is_fluid);
 }
 
 std::vector<double> pre_collision_populations(const LatticeSetup& setup, const FluidArrays& arrays,

@@ -48,7 +48,14 @@ struct LatticeSetup {
   BoundaryMap boundaries;
   // Velocity difference U between the image above and the box; no value: plain periodic in y.
   std::optional<double> lees_edwards_velocity;
+  // How wall links are closed (boundaries.hpp); never null.
+  const WallRule* wall_rule = &find_wall_rule("halfway");
 };
+
+// The weights of the wall link through which f_i enters the fluid node `node` (x - c_i is a wall
+// node), from the setup's wall rule and the link's wall fraction. The next node x + c_i counts as
+// fluid only if it is fluid and not across a sliding plane, so that both kernels find f*_h there.
+WallLinkWeights wall_link_weights(const LatticeSetup& setup, std::size_t node, int direction);
 
 struct StepParameters {
   RelaxationRates rates;

@@ -13,7 +13,8 @@
 namespace rbcsim::lattice {
 
 FluidSolver::FluidSolver(LatticeGrid grid, FluidParameters parameters)
-    : setup_{grid, BoundaryMap(grid.node_count()), parameters.lees_edwards_velocity},
+    : setup_{grid, BoundaryMap(grid.node_count()), parameters.lees_edwards_velocity,
+             &find_wall_rule(parameters.wall_rule)},
       parameters_(std::move(parameters)),
       rates_(lattice::relaxation_rates(parameters_.collision, parameters_.collision_parameters)),
       arrays_(grid.node_count()) {
@@ -51,6 +52,36 @@ void FluidSolver::set_pressure_outlet(std::size_t node, double density) {
   require_geometry_editable();
   setup_.boundaries.set_pressure_outlet(node, density);
   mark_boundary_node(node);
+}
+
+std::size_t FluidSolver::set_wall_links(std::span<const WallLink> links) {
+  require_geometry_editable();
+  const LatticeGrid& g = grid();
+  std::size_t taken = 0;
+  for (std::size_t k = 0; k < links.size(); ++k) {
+    const WallLink& link = links[k];
+    const auto problem = [&](const std::string& what) {
+      return InputError("lattice wall links", "link " + std::to_string(k) + " (node " +
+                                                  std::to_string(link.node) + ", direction " +
+                                                  std::to_string(link.direction) + "): " + what);
+    };
+    if (link.node >= g.node_count()) {
+      throw problem("the node lies outside the grid of " + std::to_string(g.node_count()) +
+                    " nodes");
+    }
+    if (link.direction < 1 || link.direction >= kDirections) {
+      throw problem("the direction must be a moving D3Q19 direction, 1 to 18");
+    }
+    if (!(link.fraction > 0.0 && link.fraction <= 1.0)) {
+      throw problem("the wall fraction must lie in (0, 1], got " + std::to_string(link.fraction));
+    }
+    const std::size_t end = g.periodic_neighbour(link.node, kVelocities[link.direction]);
+    if (setup_.boundaries.is_fluid(link.node) && setup_.boundaries.kind(end) == NodeKind::wall) {
+      setup_.boundaries.set_wall_fraction(link);
+      ++taken;
+    }
+  }
+  return taken;
 }
 
 void FluidSolver::initialise_equilibrium(double density, const std::array<double, 3>& velocity) {

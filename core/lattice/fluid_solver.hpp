@@ -8,16 +8,35 @@
 // F(t). The force field is zeroed after every step, ready for the next spread. Results do not
 // depend on the number of OpenMP threads: every kernel gives each node to exactly one thread and
 // reductions are order-independent (max) or summed in a fixed order.
+//
+// Curved walls. Voxelised walls sit half-way between a fluid node and its wall neighbour (a
+// staircase). For walls that follow the geometry, choose an interpolated rule and give the solver
+// the fraction q at which the wall cuts each fluid-to-wall link, computed from the wall shape by
+// core/geometry (the grid there must have the solver's extents):
+//   const geometry::LatticeGrid grid_um = geometry::lattice_around(shape, dx_um);
+//   const geometry::SolidMask mask = geometry::voxelise(shape, grid_um);
+//   FluidParameters parameters;
+//   parameters.wall_rule = "bouzidi";
+//   FluidSolver solver(LatticeGrid(grid_um.nx, grid_um.ny, grid_um.nz), parameters);
+//   for (std::size_t node = 0; node < mask.size(); ++node) {
+//     if (mask[node] == geometry::kSolid) solver.set_wall(node);
+//   }
+//   // ... inlet and outlet layers, if any ...
+//   solver.set_wall_links(geometry::wall_link_fractions(shape, grid_um, mask));
+// The nodes stay the staircase's; only the links' closure changes. Interpolated bounce-back does
+// not conserve mass exactly (see tests/lattice/curved_wall_test.cpp for the measured drift).
 #pragma once
 
 #include "lattice/collision.hpp"
 #include "lattice/fluid_kernel.hpp"
+#include "lattice/wall_link.hpp"
 
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -31,6 +50,9 @@ struct FluidParameters {
   // above and the box (shear rate U / ny); empty: plain periodic.
   std::optional<double> lees_edwards_velocity;
   std::string kernel = "optimised";  // a name from fluid_kernels()
+  // How wall links are closed: a name from wall_rules() (boundaries.hpp). Only links given to
+  // set_wall_links differ from half-way bounce-back, whatever the rule.
+  std::string wall_rule = "halfway";
 };
 
 struct SteadyStateCriterion {
@@ -50,7 +72,7 @@ struct SteadyStateResult {
 class FluidSolver {
  public:
   // Starts at rest at density 1, every node fluid. Throws rbcsim::InputError for an unknown
-  // collision model or kernel, or bad collision parameters.
+  // collision model, kernel or wall rule, or bad collision parameters.
   FluidSolver(LatticeGrid grid, FluidParameters parameters);
   ~FluidSolver();
   FluidSolver(const FluidSolver&) = delete;
@@ -62,6 +84,12 @@ class FluidSolver {
   // The bounce-back-with-velocity inlet: a wall node moving at the inflow velocity of that node.
   void set_velocity_inlet(std::size_t node, const std::array<double, 3>& velocity);
   void set_pressure_outlet(std::size_t node, double density);
+  // Where curved walls cut the links (WallLink), after the walls are set; links not given stay
+  // half-way. Links whose node is not fluid or whose end node is not a wall here (for instance
+  // those of inlet and outlet layers, which have their own rules) are skipped; returns how many
+  // were taken. Throws rbcsim::InputError naming `lattice wall links` and the link for a node
+  // outside the grid, a direction outside 1..18 or a fraction outside (0, 1].
+  std::size_t set_wall_links(std::span<const WallLink> links);
   const BoundaryMap& boundaries() const { return setup_.boundaries; }
   const std::vector<std::uint8_t>& solid_mask() const { return setup_.boundaries.kinds(); }
 

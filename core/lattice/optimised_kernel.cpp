@@ -168,14 +168,23 @@ RBCSIM_VECTOR_CLONES void collide_run(double* const (&p)[kDirections], std::size
 
 using LinkKind = OptimisedKernel::LinkKind;
 using LinkedNode = OptimisedKernel::LinkedNode;
+using InterpolatedLink = OptimisedKernel::InterpolatedLink;
 using Run = OptimisedKernel::Run;
+
+// What the per-link path reads and writes besides the populations.
+struct LinkBuffers {
+  const double* ghost_in;
+  double* ghost_out;
+  const InterpolatedLink* interpolated_links;
+  const double* wall_local_parts;
+};
 
 // The streaming step of one node with boundary links: gather through each link, collide, scatter
 // through each link (the write of f*_i goes through link opp(i), whose source is x + c_i).
 template <bool kForceField>
 void collide_linked_node(const LinkedNode& linked, std::size_t node_count, FluidArrays& arrays,
-                         const double* ghost_in, double* ghost_out,
-                         const std::array<double, 3>& body_force, const TrtConstants& k) {
+                         const LinkBuffers& buffers, const std::array<double, 3>& body_force,
+                         const TrtConstants& k) {
   double* const populations = arrays.populations.data();
   const std::size_t node = linked.node;
   const double old_density = arrays.density[node];
@@ -195,8 +204,17 @@ void collide_linked_node(const LinkedNode& linked, std::size_t node_count, Fluid
             anti_bounce_back(i, populations[i * node_count + node], linked.value[i], old_velocity);
         break;
       case LinkKind::lees_edwards:
-        f[i] = ghost_in[linked.source[i]];
+        f[i] = buffers.ghost_in[linked.source[i]];
         break;
+      case LinkKind::interpolated_wall: {
+        // Slot i of x + c_i holds f*_h(x + c_i) in the swapped layout; only x streams from it.
+        const InterpolatedLink& link = buffers.interpolated_links[linked.source[i]];
+        f[i] = buffers.wall_local_parts[linked.source[i]];
+        if (link.weights.behind != 0.0) {
+          f[i] += link.weights.behind * populations[i * node_count + link.behind];
+        }
+        break;
+      }
     }
   }
   std::array<double, 3> force = body_force;
@@ -224,15 +242,40 @@ void collide_linked_node(const LinkedNode& linked, std::size_t node_count, Fluid
         populations[o * node_count + node] = anti_bounce_back(o, f[i], linked.value[o], velocity);
         break;
       case LinkKind::lees_edwards:
-        ghost_out[linked.source[o]] = f[i];
+        buffers.ghost_out[linked.source[o]] = f[i];
         break;
+      case LinkKind::interpolated_wall: {
+        // The part behind follows in add_wall_parts_behind.
+        const InterpolatedLink& link = buffers.interpolated_links[linked.source[o]];
+        populations[o * node_count + node] =
+            wall_link_local_part(link.weights, f[i], f[o], moments.density, link.wall_coefficient);
+        break;
+      }
     }
   }
 }
 
-// Fills `linked` for a fluid node; returns false when every link is plain periodic fluid.
+// Fills the wall link i of `linked` (x - c_i is a wall node): half-way links keep the plain path.
+void link_wall(const LatticeSetup& setup, int i, std::size_t wall_node, LinkedNode& linked,
+               std::vector<InterpolatedLink>& interpolated_links) {
+  const double coefficient =
+      wall_momentum_coefficient(i, setup.boundaries.wall_velocity(wall_node));
+  const WallLinkWeights weights = wall_link_weights(setup, linked.node, i);
+  if (weights == kHalfwayWeights) {
+    linked.kind[i] = static_cast<std::uint8_t>(LinkKind::wall);
+    linked.value[i] = coefficient;
+    return;
+  }
+  linked.kind[i] = static_cast<std::uint8_t>(LinkKind::interpolated_wall);
+  linked.source[i] = interpolated_links.size();
+  interpolated_links.push_back({linked.node, i, weights, coefficient,
+                                setup.grid.periodic_neighbour(linked.node, kVelocities[i])});
+}
+
+// Fills `linked` for a fluid node, appending its interpolated wall links; returns false when
+// every link is plain periodic fluid.
 bool link_node(const LatticeSetup& setup, std::size_t node, std::size_t plane_size,
-               LinkedNode& linked) {
+               LinkedNode& linked, std::vector<InterpolatedLink>& interpolated_links) {
   const LatticeGrid& grid = setup.grid;
   const auto [x, y, z] = grid.coordinates(node);
   const std::size_t plane_position = x + static_cast<std::size_t>(grid.nx()) * z;
@@ -255,8 +298,7 @@ bool link_node(const LatticeSetup& setup, std::size_t node, std::size_t plane_si
         linked.kind[i] = static_cast<std::uint8_t>(LinkKind::fluid);
         break;
       case NodeKind::wall:
-        linked.kind[i] = static_cast<std::uint8_t>(LinkKind::wall);
-        linked.value[i] = wall_momentum_coefficient(i, setup.boundaries.wall_velocity(source));
+        link_wall(setup, i, source, linked, interpolated_links);
         needs_links = true;
         break;
       case NodeKind::pressure_outlet:
@@ -333,7 +375,8 @@ OptimisedKernel::OptimisedKernel(const LatticeSetup& setup)
       for (int x = 0; x < grid.nx(); ++x) {
         const std::size_t node = grid.index(x, y, z);
         fluid[x] = setup.boundaries.is_fluid(node);
-        const bool has_links = fluid[x] && link_node(setup, node, plane_size_, linked);
+        const bool has_links =
+            fluid[x] && link_node(setup, node, plane_size_, linked, interpolated_links_);
         bulk[x] = fluid[x] && !has_links;
         if (has_links) {
           linked_nodes_.push_back(linked);
@@ -350,6 +393,7 @@ OptimisedKernel::OptimisedKernel(const LatticeSetup& setup)
     ghost_in_.assign(kDirections * plane_size_, 0.0);
     ghost_out_.assign(kDirections * plane_size_, 0.0);
   }
+  wall_local_parts_.assign(interpolated_links_.size(), 0.0);
 }
 
 void OptimisedKernel::step(FluidArrays& arrays, const StepParameters& parameters) {
@@ -398,6 +442,9 @@ void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& 
   if (setup_.lees_edwards_velocity) {
     fill_lees_edwards_ghosts(arrays, parameters.time);
   }
+  store_wall_local_parts(arrays);
+  const LinkBuffers buffers{ghost_in_.data(), ghost_out_.data(), interpolated_links_.data(),
+                            wall_local_parts_.data()};
   const auto rows = static_cast<std::int64_t>(grid.row_count());
 #pragma omp parallel for schedule(static) if (grid.worth_threads())
   for (std::int64_t row = 0; row < rows; ++row) {
@@ -418,14 +465,55 @@ void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& 
                                parameters.body_force, constants);
     }
     for (std::size_t l = linked_begin_[row]; l < linked_begin_[row + 1]; ++l) {
-      collide_linked_node<kForceField>(linked_nodes_[l], node_count, arrays, ghost_in_.data(),
-                                       ghost_out_.data(), parameters.body_force, constants);
+      collide_linked_node<kForceField>(linked_nodes_[l], node_count, arrays, buffers,
+                                       parameters.body_force, constants);
     }
   }
   if (setup_.lees_edwards_velocity) {
     empty_lees_edwards_ghosts(arrays, parameters.time + 1);
   }
+  add_wall_parts_behind(arrays);
   arrays.layout = PopulationLayout::natural;
+}
+
+// Before a streaming step, in the swapped layout: slot i of x holds f*_h(x), slot h holds f*_i(x),
+// and the density is that of the local step's collision.
+void OptimisedKernel::store_wall_local_parts(const FluidArrays& arrays) {
+  if (interpolated_links_.empty()) {
+    return;  // no fork-join for nothing
+  }
+  const std::size_t node_count = setup_.grid.node_count();
+  const double* const populations = arrays.populations.data();
+  const auto count = static_cast<std::int64_t>(interpolated_links_.size());
+#pragma omp parallel for schedule(static) if (setup_.grid.worth_threads())
+  for (std::int64_t l = 0; l < count; ++l) {
+    const InterpolatedLink& link = interpolated_links_[l];
+    const int i = link.direction;
+    wall_local_parts_[l] =
+        wall_link_local_part(link.weights, populations[i * node_count + link.node],
+                             populations[kOpposite[i] * node_count + link.node],
+                             arrays.density[link.node], link.wall_coefficient);
+  }
+}
+
+// After a streaming step, in the natural layout: slot h of x holds f*_h(x + c_i), streamed there
+// by x + c_i (a plain fluid link whenever weights.behind is not zero).
+void OptimisedKernel::add_wall_parts_behind(FluidArrays& arrays) const {
+  if (interpolated_links_.empty()) {
+    return;  // no fork-join for nothing
+  }
+  const std::size_t node_count = setup_.grid.node_count();
+  double* const populations = arrays.populations.data();
+  const auto count = static_cast<std::int64_t>(interpolated_links_.size());
+#pragma omp parallel for schedule(static) if (setup_.grid.worth_threads())
+  for (std::int64_t l = 0; l < count; ++l) {
+    const InterpolatedLink& link = interpolated_links_[l];
+    const int i = link.direction;
+    if (link.weights.behind != 0.0) {
+      populations[i * node_count + link.node] +=
+          link.weights.behind * populations[kOpposite[i] * node_count + link.node];
+    }
+  }
 }
 
 void OptimisedKernel::fill_lees_edwards_ghosts(const FluidArrays& arrays,

@@ -138,11 +138,17 @@ void stream_reference(const LatticeSetup& setup, const FluidArrays& arrays,
         case NodeKind::fluid:
           streamed = post[i * node_count + source];
           break;
-        case NodeKind::wall:
-          streamed =
-              bounce_back(reflected, arrays.density[node],
-                          wall_momentum_coefficient(i, setup.boundaries.wall_velocity(source)));
+        case NodeKind::wall: {
+          const WallLinkWeights weights = wall_link_weights(setup, node, i);
+          streamed = wall_link_local_part(
+              weights, reflected, post[i * node_count + node], arrays.density[node],
+              wall_momentum_coefficient(i, setup.boundaries.wall_velocity(source)));
+          if (weights.behind != 0.0) {
+            const std::size_t behind = grid.periodic_neighbour(node, c);
+            streamed += weights.behind * post[o * node_count + behind];
+          }
           break;
+        }
         case NodeKind::pressure_outlet:
           streamed = anti_bounce_back(i, reflected, setup.boundaries.outlet_density(source),
                                       node_velocity(arrays, node));

@@ -37,11 +37,6 @@ struct TermScratch {
   double cell_deviation = 0.0;         // d of a cell-level term
 };
 
-struct MembraneWorkspace {
-  CellGeometry geometry;
-  TermScratch scratch;
-};
-
 struct TermContext {
   std::span<const Vec3> positions_um;
   std::span<const mesh::Triangle> triangles;

@@ -1,5 +1,9 @@
 // The registry of membrane force terms (`membrane.forces`), in evaluation order.
+#include <algorithm>
+#include <iterator>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "membrane/force_terms.hpp"
 
@@ -30,6 +34,21 @@ constexpr ForceTermEntry kForceTerms[] = {
 }  // namespace
 
 std::span<const ForceTermEntry> force_term_table() { return kForceTerms; }
+
+std::vector<std::unique_ptr<ForceTerm>> make_force_terms(std::span<const std::string_view> names,
+                                                         const MembraneParameters& parameters,
+                                                         const ReferenceState& reference) {
+  std::vector<std::unique_ptr<ForceTerm>> terms;
+  for (auto name : names) {
+    const auto* entry = std::find_if(std::begin(kForceTerms), std::end(kForceTerms),
+                                     [&](const ForceTermEntry& e) { return e.name == name; });
+    if (entry == std::end(kForceTerms)) {
+      throw std::logic_error("membrane force term '" + std::string(name) + "' is not registered");
+    }
+    terms.push_back(entry->make(parameters, reference));
+  }
+  return terms;
+}
 
 std::vector<std::string> all_force_term_names() {
   std::vector<std::string> names;

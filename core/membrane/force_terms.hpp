@@ -10,6 +10,7 @@
 #include <memory>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "membrane/force_law.hpp"
 #include "membrane/force_term.hpp"
@@ -121,5 +122,9 @@ struct ForceTermEntry {
                                      const ReferenceState& reference);
 };
 std::span<const ForceTermEntry> force_term_table();
+// The terms of `names` (registered names, in the order given), made by their factories.
+std::vector<std::unique_ptr<ForceTerm>> make_force_terms(std::span<const std::string_view> names,
+                                                         const MembraneParameters& parameters,
+                                                         const ReferenceState& reference);
 
 }  // namespace rbcsim::membrane

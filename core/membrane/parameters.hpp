@@ -49,6 +49,10 @@ struct MembraneParameters {
   // momentum, and with the momentum-conserving sign the `paper` area-difference force cancels
   // exactly at every vertex of a closed mesh (tested), so only `gradient` has all six forces.
   std::string distribution = "gradient";
+  // Which implementation computes the forces (membrane_kernel.hpp): "optimised" (all terms fused
+  // into one pass over the elements, the default) or "reference" (one plain loop per term, kept
+  // to test the optimised one against). Both give the same forces up to round-off (tested).
+  std::string kernel = "optimised";
   // Safety net, not physics: a vertex whose total force exceeds this is clamped to it and counted
   // in MembraneForces::capped_vertex_count (HemoCell uses 50 pN). Infinity disables it.
   double vertex_force_cap_pN = 50.0;

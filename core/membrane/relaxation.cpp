@@ -55,7 +55,7 @@ double estimate_stiffest_mode_pN_per_um(const MembraneModel& model,
   const auto count = model.vertex_count();
   auto workspace = model.make_workspace();
   auto forces = model.make_forces();
-  model.compute(positions_um, workspace, forces);
+  model.compute(positions_um, workspace, forces, ForceDetail::totals);
   const std::vector<Vec3> base_pN = forces.total_pN;
 
   auto direction = start_direction(count);
@@ -67,7 +67,7 @@ double estimate_stiffest_mode_pN_per_um(const MembraneModel& model,
     for (auto& v : direction) v /= length;
     const double step_um = probe_um_scale / max_norm(direction);
     for (std::size_t i = 0; i < count; ++i) probe_um[i] = positions_um[i] + step_um * direction[i];
-    model.compute(probe_um, workspace, forces);
+    model.compute(probe_um, workspace, forces, ForceDetail::totals);
     for (std::size_t i = 0; i < count; ++i) {
       direction[i] = (forces.total_pN[i] - base_pN[i]) / step_um;
     }
@@ -101,7 +101,7 @@ RelaxationResult relax_membrane(const MembraneModel& model, std::span<Vec3> posi
       result.time_step_s = settings.step_fraction /
                            (settings.mobility_um_per_s_per_pN * result.stiffest_mode_pN_per_um);
     }
-    model.compute(positions_um, workspace, forces);
+    model.compute(positions_um, workspace, forces, ForceDetail::totals);
     result.capped_vertex_count += forces.capped_vertex_count;
     if (!external_forces_pN.empty()) {
       for (std::size_t i = 0; i < count; ++i) forces.total_pN[i] += external_forces_pN[i];

@@ -21,6 +21,12 @@ class VertexGather {
   std::size_t slot_count() const { return slots_.size(); }
   // vertex_sums[v] = sum of slot_values over v's slots (overwrites; slot_values may be longer).
   void gather(std::span<const Vec3> slot_values, std::span<Vec3> vertex_sums) const;
+  // The slots of `vertex` in increasing order, for kernels that compute slot values on the fly.
+  std::span<const std::int32_t> slots_of(std::size_t vertex) const {
+    return std::span(slots_).subspan(
+        static_cast<std::size_t>(offsets_[vertex]),
+        static_cast<std::size_t>(offsets_[vertex + 1] - offsets_[vertex]));
+  }
 
  private:
   std::vector<std::int32_t> offsets_;  // compressed rows: slots of v are offsets_[v]..[v+1]

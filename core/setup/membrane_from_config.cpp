@@ -39,6 +39,7 @@ membrane::MembraneParameters membrane_parameters_from(const config::Config& conf
       config.number("physics.thermal_energy_J") * kPiconewtonMicrometresPerJoule;
   parameters.forces = config.string_list("membrane.forces");
   parameters.distribution = config.string("membrane.distribution");
+  parameters.kernel = config.string("membrane.kernel");
   return parameters;
 }
 

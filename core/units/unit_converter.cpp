@@ -65,6 +65,8 @@ double UnitConverter::scale(PhysicalUnit unit) const {
       return force_density * dx_m_ * dx_m_ * dx_m_ / kNewtonsPerPiconewton;
     case PhysicalUnit::force_density_N_per_m3:
       return force_density;
+    case PhysicalUnit::density_kg_per_m3:
+      return density_kg_per_m3_;
     case PhysicalUnit::pressure_Pa:
       return density_kg_per_m3_ * velocity * velocity;
     case PhysicalUnit::kinematic_viscosity_m2_per_s:

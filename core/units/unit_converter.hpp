@@ -33,6 +33,7 @@ enum class PhysicalUnit {
   force_N,
   force_pN,
   force_density_N_per_m3,
+  density_kg_per_m3,
   pressure_Pa,
   kinematic_viscosity_m2_per_s,
   shear_rate_per_s,

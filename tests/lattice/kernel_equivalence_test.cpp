@@ -1,5 +1,6 @@
 // The optimised kernel against the reference kernel, thread-count independence, and mass
-// conservation, on random-ish states with solids, force fields and every boundary kind.
+// conservation, on random-ish states with solids, force fields, every boundary kind and every wall
+// rule.
 #include "lattice/fluid_solver.hpp"
 
 #include <omp.h>
@@ -19,6 +20,7 @@ struct Scenario {
   bool open_channel = false;  // walls in y (top one moving), inlet at x = 0, outlet at x = nx - 1
   bool moving_obstacles = true;  // obstacle nodes with random wall velocities (break mass balance)
   std::string collision = "trt";
+  std::string wall_rule = "halfway";  // other rules get random wall fractions on every wall link
 };
 
 const LatticeGrid kGrid(20, 16, 14);  // above the threshold at which kernels use threads
@@ -26,6 +28,23 @@ const LatticeGrid kGrid(20, 16, 14);  // above the threshold at which kernels us
 std::array<double, 3> random_vector(std::mt19937& random, double magnitude) {
   std::uniform_real_distribution<double> uniform(-magnitude, magnitude);
   return {uniform(random), uniform(random), uniform(random)};
+}
+
+// Every link from a fluid node into a wall gets a fraction in (0, 1], some exactly 1/2 and 1, so
+// that every form of the interpolated rule and its half-way fallback are exercised.
+void set_random_wall_fractions(FluidSolver& solver) {
+  const LatticeGrid& grid = solver.grid();
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<WallLink> links;
+  for (std::size_t node = 0; node < grid.node_count(); ++node) {
+    for (int i = 1; i < kDirections; ++i) {
+      const double draw = unit(random);
+      const double fraction = draw < 0.1 ? 0.5 : (draw < 0.2 ? 1.0 : 1.0 - unit(random));
+      links.push_back({node, i, fraction});
+    }
+  }
+  solver.set_wall_links(links);
 }
 
 void build_geometry(const Scenario& scenario, FluidSolver& solver) {
@@ -41,8 +60,9 @@ void build_geometry(const Scenario& scenario, FluidSolver& solver) {
       solver.set_velocity_inlet(node, {0.02 * (1.0 + 0.1 * y), 0.001 * z, 0.0});
     } else if (scenario.open_channel && x == grid.nx() - 1) {
       solver.set_pressure_outlet(node, 1.0 + 0.001 * z);
-    } else if (y >= 2 && y <= grid.ny() - 3) {
-      // Random obstacles away from the sliding planes.
+    } else if (y >= 1 && y <= grid.ny() - 2) {
+      // Random obstacles off the sliding planes, some next to them: an interpolated link there
+      // has no fluid node behind it, across the plane.
       const double draw = unit(random);
       if (draw < 0.08) {
         solver.set_wall(node);
@@ -52,6 +72,9 @@ void build_geometry(const Scenario& scenario, FluidSolver& solver) {
         solver.set_pressure_outlet(node, 1.0 + 0.02 * unit(random));
       }
     }
+  }
+  if (scenario.wall_rule != "halfway") {
+    set_random_wall_fractions(solver);
   }
 }
 
@@ -85,6 +108,7 @@ Trajectory run(const Scenario& scenario, const std::string& kernel, std::size_t 
   FluidParameters parameters;
   parameters.kernel = kernel;
   parameters.collision = scenario.collision;
+  parameters.wall_rule = scenario.wall_rule;
   parameters.collision_parameters.tau = 0.8;
   parameters.body_force = {2e-5, -1e-5, 3e-6};
   if (scenario.sliding) {
@@ -129,8 +153,11 @@ double largest_fluid_difference(const std::vector<double>& a, const std::vector<
   return largest;
 }
 
-const std::vector<Scenario> kScenarios = {
-    {true, false, true, "trt"}, {false, true, true, "trt"}, {true, false, true, "bgk"}};
+const std::vector<Scenario> kScenarios = {{true, false, true, "trt"},
+                                          {false, true, true, "trt"},
+                                          {true, false, true, "bgk"},
+                                          {true, false, true, "trt", "bouzidi"},
+                                          {false, true, true, "bgk", "bouzidi"}};
 
 // Seven steps: the AA kernel is compared after local and after streaming steps, whose
 // populations are recovered from the swapped layout.
@@ -144,11 +171,13 @@ TEST(KernelEquivalence, OptimisedMatchesReferenceWithEveryBoundary) {
       for (std::size_t s = 0; s < steps; ++s) {
         EXPECT_LT(largest_fluid_difference(reference.fields[s], optimised.fields[s], geometry),
                   1e-13)
-            << "step " << s << (scenario.sliding ? " sliding" : " open channel");
+            << "step " << s << (scenario.sliding ? " sliding " : " open channel ")
+            << scenario.wall_rule;
       }
       EXPECT_LT(largest_fluid_difference(reference.populations, optimised.populations, geometry),
                 1e-13)
-          << steps << " steps" << (scenario.sliding ? " sliding" : " open channel");
+          << steps << " steps" << (scenario.sliding ? " sliding " : " open channel ")
+          << scenario.wall_rule;
     }
   }
 }

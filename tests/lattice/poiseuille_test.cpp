@@ -66,7 +66,7 @@ double pipe_poiseuille_error(int diameter) {
   const double force = 4.0 * viscosity * kPeakVelocity / (radius * radius);
   parameters.body_force = {force, 0.0, 0.0};
   const int width = diameter + 2;
-  FluidSolver solver(LatticeGrid(2, width, width), parameters);
+  FluidSolver solver(LatticeGrid(1, width, width), parameters);  // x-invariant: one node long
   const double centre = 0.5 * (width - 1);
   const auto radial_squared = [&](int y, int z) {
     return (y - centre) * (y - centre) + (z - centre) * (z - centre);
@@ -89,8 +89,8 @@ double pipe_poiseuille_error(int diameter) {
 // and its hydraulic radius depends on how the lattice cuts the circle (the Gauss circle problem),
 // which varies irregularly with the diameter. The L2 error therefore falls like dx^1 to dx^2 with
 // scatter (measured with the axis between nodes: D = 10: 4.5 %, 16: 4.2 %, 20: 2.4 %, 24: 3.7 %,
-// 30: 1.2 %, 40: 0.80 %). The 1 % target is met at 40 nodes across; at 20 nodes it would need
-// curved-wall (interpolated) bounce-back, which DESIGN.md does not ask of the voxelised walls.
+// 30: 1.2 %, 40: 0.80 %). The 1 % target is met at 40 nodes across; at 20 nodes it needs
+// curved-wall (interpolated) bounce-back, the "bouzidi" wall rule (curved_wall_test.cpp).
 // Tested: under 3 % at 20 nodes, under 1 % at 40 nodes, and an observed order above 1.
 TEST(PipePoiseuille, StaircaseErrorBoundedAndFallingWithResolution) {
   const double coarse = pipe_poiseuille_error(20);

@@ -60,6 +60,8 @@ TEST(UnitConverter, ScalesFollowFromDxDtRho) {
                    converter.to_lattice(PhysicalUnit::force_N, 50e-12));
   EXPECT_DOUBLE_EQ(converter.to_lattice(PhysicalUnit::pressure_Pa, 10.0),
                    10.0 * dt * dt / (rho * dx * dx));
+  // The lattice density 1 is the plasma's.
+  EXPECT_DOUBLE_EQ(converter.to_physical(PhysicalUnit::density_kg_per_m3, 1.02), 1.02 * rho);
   // A force density over one lattice cell is a force.
   EXPECT_DOUBLE_EQ(
       converter.to_lattice(PhysicalUnit::force_density_N_per_m3, 50e-12 / (dx * dx * dx)),
@@ -79,8 +81,9 @@ TEST(UnitConverter, EveryUnitRoundTrips) {
   for (const auto unit :
        {PhysicalUnit::length_m, PhysicalUnit::length_um, PhysicalUnit::time_s,
         PhysicalUnit::velocity_m_per_s, PhysicalUnit::force_N, PhysicalUnit::force_pN,
-        PhysicalUnit::force_density_N_per_m3, PhysicalUnit::pressure_Pa,
-        PhysicalUnit::kinematic_viscosity_m2_per_s, PhysicalUnit::shear_rate_per_s}) {
+        PhysicalUnit::force_density_N_per_m3, PhysicalUnit::density_kg_per_m3,
+        PhysicalUnit::pressure_Pa, PhysicalUnit::kinematic_viscosity_m2_per_s,
+        PhysicalUnit::shear_rate_per_s}) {
     for (const double value : {-3.5e-7, 1.0, 42.0e3}) {
       const double back = converter.to_physical(unit, converter.to_lattice(unit, value));
       EXPECT_NEAR(back, value, 1e-14 * std::abs(value)) << static_cast<int>(unit);

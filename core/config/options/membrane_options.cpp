@@ -1,4 +1,5 @@
 #include "config/options/option_areas.hpp"
+#include "membrane/membrane_kernel.hpp"
 #include "membrane/parameters.hpp"
 
 namespace rbcsim::config {
@@ -78,6 +79,11 @@ void add_scales_and_variants(OptionTable& table) {
       .above(0.0);
   table.add_choice_list("membrane.forces", membrane::all_force_term_names(), kDefaults.forces,
                         "Force terms switched on.");
+  std::vector<std::string> kernels;
+  for (const auto& kernel : membrane::membrane_kernel_table()) kernels.emplace_back(kernel.name);
+  table.add_choice("membrane.kernel", kernels, kDefaults.kernel,
+                   "Force kernel: the fused optimised one, or the plain reference it is tested "
+                   "against (same forces to round-off).");
   table.add_choice("membrane.distribution", {"gradient", "paper"}, kDefaults.distribution,
                    "Distribution of the angle-based forces: exact energy gradient (conserves "
                    "angular momentum) or Eqs. 15-18 as printed.");

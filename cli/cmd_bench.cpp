@@ -1,0 +1,327 @@
+// rbcsim bench [--json] [--threads N] [--verbose]: what this machine and this build achieve
+// (DESIGN.md §5), in one run — memory bandwidth (STREAM triad), fluid-only MLUPS on HemoCell's
+// 40x40x20 lattice and on one far beyond the last-level cache, the fraction of the DRAM roofline,
+// and ms per coupled step with a 642- and a 2562-vertex cell — for one thread and for all, beside
+// HemoCell's figures on the same machine. Wall-clock measurements: other load lowers them, so the
+// machine's load average is printed with them.
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "command_registry.hpp"
+#include "common_options.hpp"
+#include "coupling/benchmark.hpp"
+#include "io/atomic_file.hpp"
+#include "lattice/benchmark.hpp"
+#include "lattice/d3q19.hpp"
+#include "mesh/cell_shapes.hpp"
+#include "setup/cell_from_config.hpp"
+#include "setup/membrane_from_config.hpp"
+
+namespace rbcsim::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// HemoCell built from source on the project machine, same cases (DESIGN.md §5).
+constexpr double kHemoCellFluidMlupsPerCore = 3.5;
+constexpr double kHemoCellCoupledMsOneCore = 12.0;  // 11-13 ms per step, 642-vertex cell
+constexpr double kHemoCellCoupledMsTwoCores = 7.0;
+// The targets of the issue: >= 80 % of the DRAM roofline on the large lattice; a coupled step
+// (642 vertices, phi2, one core) 20x faster than HemoCell's, i.e. <= 0.6 ms.
+constexpr double kRooflineTarget = 0.8;
+constexpr double kCoupledTargetMsOneCore = 0.6;
+// Bytes moved per node update by a double-precision D3Q19 kernel: 19 populations read and written.
+constexpr double kBytesPerNodeUpdate = 2.0 * lattice::kDirections * sizeof(double);
+
+const std::array<int, 3> kHemoCellLattice = {40, 40, 20};
+// Icosphere levels of the two cells (the configured morphology): 642 and 2562 vertices.
+constexpr std::array<int, 2> kCellLevels = {3, 4};
+// Steps per fluid measurement and repetitions (the best counts). On the small lattice a step takes
+// about a millisecond, so short runs, many times, catch moments free of other load, as the
+// fastest batch does for the coupled step; the reference kernel sets the cost of each repetition.
+constexpr std::size_t kSmallLatticeSteps = 5;
+constexpr int kSmallLatticeRepetitions = 10;
+constexpr std::size_t kLargeLatticeSteps = 1;
+// Each triad array at least this large, and at least the last-level cache.
+constexpr std::size_t kMinimumTriadBytes = std::size_t{64} << 20;
+
+struct BenchOptions {
+  CommonOptions common;
+  std::vector<int> large_lattice;
+};
+
+std::string lattice_name(const std::array<int, 3>& extent) {
+  return std::to_string(extent[0]) + "x" + std::to_string(extent[1]) + "x" +
+         std::to_string(extent[2]);
+}
+
+lattice::FluidThroughput best_fluid_throughput(const std::array<int, 3>& extent, std::size_t steps,
+                                               int repetitions, int threads) {
+  lattice::FluidThroughput best;
+  for (int r = 0; r < repetitions; ++r) {
+    const auto measured =
+        lattice::measure_fluid_mlups(extent[0], extent[1], extent[2], steps, threads);
+    best.optimised_mlups = std::max(best.optimised_mlups, measured.optimised_mlups);
+    best.reference_mlups = std::max(best.reference_mlups, measured.reference_mlups);
+  }
+  return best;
+}
+
+Json fluid_entry(const std::array<int, 3>& extent, const lattice::FluidThroughput& throughput,
+                 double roofline_mlups, int threads) {
+  return {{"lattice", extent},
+          {"optimised_mlups", throughput.optimised_mlups},
+          {"reference_mlups", throughput.reference_mlups},
+          {"optimised_over_reference", throughput.optimised_mlups / throughput.reference_mlups},
+          {"roofline_fraction", throughput.optimised_mlups / roofline_mlups},
+          {"speedup_vs_hemocell_per_core",
+           throughput.optimised_mlups / (kHemoCellFluidMlupsPerCore * threads)}};
+}
+
+Json coupled_entry(const coupling::CoupledStepTiming& timing, int threads) {
+  const auto& phases = timing.fastest_batch_phases;
+  const double ms_per_step = 1e3 / static_cast<double>(phases.steps);
+  Json entry = {{"vertices", timing.vertex_count},
+                {"ms_per_step", timing.ms_per_step},
+                {"phases_ms_per_step",
+                 {{"membrane", phases.membrane_s * ms_per_step},
+                  {"spread", phases.spread_s * ms_per_step},
+                  {"fluid", phases.fluid_s * ms_per_step},
+                  {"interpolate_advance", phases.advance_s * ms_per_step},
+                  {"checks", phases.checks_s * ms_per_step},
+                  {"observers", phases.observers_s * ms_per_step}}}};
+  // HemoCell's figures are for the 642-vertex cell on one and on two cores.
+  const bool comparable = timing.vertex_count == 642 && (threads == 1 || threads == 2);
+  entry["speedup_vs_hemocell"] =
+      comparable ? Json((threads == 1 ? kHemoCellCoupledMsOneCore : kHemoCellCoupledMsTwoCores) /
+                        timing.ms_per_step)
+                 : Json(nullptr);
+  return entry;
+}
+
+struct BenchSetup {
+  std::vector<mesh::TriangleMesh> cells;
+  membrane::MembraneParameters membrane;
+  std::optional<units::UnitConverter> units;  // has no default state
+  std::string ibm_kernel;
+  std::array<int, 3> large_lattice;
+  std::size_t triad_elements;
+};
+
+Json measure_at(int threads, const BenchSetup& setup) {
+  const double bandwidth =
+      coupling::measure_triad_bandwidth_GB_per_s(setup.triad_elements, threads);
+  const double roofline_mlups = bandwidth * 1e9 / kBytesPerNodeUpdate / 1e6;
+  Json fluid = Json::array();
+  fluid.push_back(fluid_entry(kHemoCellLattice,
+                              best_fluid_throughput(kHemoCellLattice, kSmallLatticeSteps,
+                                                    kSmallLatticeRepetitions, threads),
+                              roofline_mlups, threads));
+  fluid.push_back(
+      fluid_entry(setup.large_lattice,
+                  best_fluid_throughput(setup.large_lattice, kLargeLatticeSteps, 1, threads),
+                  roofline_mlups, threads));
+  Json coupled = Json::array();
+  for (const auto& cell : setup.cells) {
+    coupled.push_back(
+        coupled_entry(coupling::measure_coupled_step(cell, setup.membrane, *setup.units,
+                                                     kHemoCellLattice, setup.ibm_kernel, threads),
+                      threads));
+  }
+  return {{"threads", threads},
+          {"memory_bandwidth_GB_per_s", bandwidth},
+          {"roofline_mlups", roofline_mlups},
+          {"fluid", fluid},
+          {"coupled", coupled}};
+}
+
+BenchSetup bench_setup(const BenchOptions& options, const coupling::MachineDescription& machine) {
+  const auto config = resolve_config(options.common);
+  BenchSetup setup;
+  for (const int level : kCellLevels) {
+    setup.cells.push_back(mesh::generate_cell(config.string("morphology"), level,
+                                              setup::cell_shape_parameters_from(config)));
+  }
+  setup.membrane = setup::membrane_parameters_from(config);
+  setup.units.emplace(config::make_unit_converter(config));
+  setup.ibm_kernel = config.string("ibm.kernel");
+  setup.large_lattice = options.large_lattice.size() == 3
+                            ? std::array<int, 3>{options.large_lattice[0], options.large_lattice[1],
+                                                 options.large_lattice[2]}
+                            : coupling::lattice_beyond_cache(machine.last_level_cache_bytes);
+  setup.triad_elements =
+      std::max(kMinimumTriadBytes, machine.last_level_cache_bytes) / sizeof(double);
+  return setup;
+}
+
+Json machine_json(const coupling::MachineDescription& machine) {
+  return {{"cpu_model", machine.cpu_model},
+          {"logical_cpus", machine.logical_cpus},
+          {"openmp_max_threads", machine.openmp_max_threads},
+          {"omp_wait_policy", machine.omp_wait_policy},
+          {"load_average", machine.load_average},
+          {"last_level_cache_bytes", machine.last_level_cache_bytes}};
+}
+
+std::string fixed(double value, int decimals) {
+  std::array<char, 32> text{};
+  std::snprintf(text.data(), text.size(), "%.*f", decimals, value);
+  return text.data();
+}
+
+std::string number_or_dash(const Json& value, int decimals, const std::string& suffix = "") {
+  return value.is_null() ? "-" : fixed(value.get<double>(), decimals) + suffix;
+}
+
+// One row of the text table: a label and one column per thread count.
+void print_row(const std::string& label, const std::vector<std::string>& cells,
+               const std::string& note = "") {
+  std::printf("%-44s", label.c_str());
+  for (const auto& cell : cells) std::printf("%14s", cell.c_str());
+  if (!note.empty()) std::printf("   %s", note.c_str());
+  std::printf("\n");
+}
+
+template <typename Cell>
+std::vector<std::string> per_run(const Json& runs, Cell cell) {
+  std::vector<std::string> cells;
+  for (const auto& run : runs) cells.push_back(cell(run));
+  return cells;
+}
+
+void print_fluid_rows(const Json& runs, std::size_t index) {
+  const auto& first = runs.front()["fluid"][index];
+  const std::string name = "fluid " + lattice_name(first["lattice"].get<std::array<int, 3>>());
+  const auto field = [&](const char* key, int decimals, const std::string& suffix = "") {
+    return per_run(runs, [&](const Json& run) {
+      return number_or_dash(run["fluid"][index][key], decimals, suffix);
+    });
+  };
+  print_row(name + ", optimised kernel (MLUPS)", field("optimised_mlups", 1));
+  print_row(name + ", reference kernel (MLUPS)", field("reference_mlups", 2));
+  print_row("  optimised / reference", field("optimised_over_reference", 1, "x"));
+  print_row("  fraction of the DRAM roofline",
+            per_run(runs,
+                    [&](const Json& run) {
+                      return fixed(100.0 * run["fluid"][index]["roofline_fraction"].get<double>(),
+                                   0) +
+                             " %";
+                    }),
+            index == 1 ? "target >= " + fixed(100.0 * kRooflineTarget, 0) + " % (large lattice)"
+                       : "in cache: may exceed 100 %");
+  print_row("  vs HemoCell (3.5 MLUPS per core)", field("speedup_vs_hemocell_per_core", 1, "x"));
+}
+
+void print_coupled_rows(const Json& runs, std::size_t index, bool verbose) {
+  const auto& first = runs.front()["coupled"][index];
+  const std::string name =
+      "coupled step, " + std::to_string(first["vertices"].get<int>()) + " vertices (ms)";
+  print_row(name,
+            per_run(runs,
+                    [&](const Json& run) {
+                      return fixed(run["coupled"][index]["ms_per_step"].get<double>(), 3);
+                    }),
+            first["vertices"] == 642
+                ? "target <= " + fixed(kCoupledTargetMsOneCore, 1) + " ms on one core"
+                : "");
+  print_row("  vs HemoCell (11-13 ms one core, 7 ms two)", per_run(runs, [&](const Json& run) {
+              return number_or_dash(run["coupled"][index]["speedup_vs_hemocell"], 1, "x");
+            }));
+  if (!verbose) return;
+  for (const auto& [phase, value] : first["phases_ms_per_step"].items()) {
+    print_row("    " + phase + " (ms)", per_run(runs, [&](const Json& run) {
+                return fixed(run["coupled"][index]["phases_ms_per_step"][phase].get<double>(), 3);
+              }));
+  }
+}
+
+void print_text(const Json& report, bool verbose) {
+  const auto& machine = report["machine"];
+  std::printf("rbcsim bench: %s, %d logical CPUs, last-level cache %.0f MiB\n",
+              machine["cpu_model"].get<std::string>().c_str(), machine["logical_cpus"].get<int>(),
+              machine["last_level_cache_bytes"].get<double>() / (1 << 20));
+  std::printf("OMP_WAIT_POLICY=%s, load average %s (other processes lower every figure)\n\n",
+              machine["omp_wait_policy"].get<std::string>().c_str(),
+              machine["load_average"].get<std::string>().c_str());
+  const auto& runs = report["runs"];
+  print_row("", per_run(runs, [](const Json& run) {
+              return std::to_string(run["threads"].get<int>()) + " thread(s)";
+            }));
+  print_row("memory bandwidth, STREAM triad (GB/s)", per_run(runs, [](const Json& run) {
+              return fixed(run["memory_bandwidth_GB_per_s"].get<double>(), 1);
+            }));
+  print_row("DRAM roofline at 304 B/node (MLUPS)", per_run(runs, [](const Json& run) {
+              return fixed(run["roofline_mlups"].get<double>(), 1);
+            }));
+  for (std::size_t index = 0; index < runs.front()["fluid"].size(); ++index) {
+    print_fluid_rows(runs, index);
+  }
+  for (std::size_t index = 0; index < runs.front()["coupled"].size(); ++index) {
+    print_coupled_rows(runs, index, verbose);
+  }
+}
+
+void run_bench(const BenchOptions& options) {
+  const auto machine = coupling::describe_machine();
+  const auto setup = bench_setup(options, machine);
+  const int all_threads =
+      options.common.threads > 0 ? options.common.threads : machine.logical_cpus;
+  std::vector<int> thread_counts = {1};
+  if (all_threads > 1) thread_counts.push_back(all_threads);
+
+  Json runs = Json::array();
+  for (const int threads : thread_counts) {
+    if (!options.common.quiet && !options.common.json) {
+      std::cerr << "rbcsim bench: measuring with " << threads << " thread(s)...\n";
+    }
+    runs.push_back(measure_at(threads, setup));
+  }
+  const Json report = {{"machine", machine_json(machine)},
+                       {"ibm_kernel", setup.ibm_kernel},
+                       {"hemocell",
+                        {{"fluid_mlups_per_core", kHemoCellFluidMlupsPerCore},
+                         {"coupled_ms_per_step_one_core", kHemoCellCoupledMsOneCore},
+                         {"coupled_ms_per_step_two_cores", kHemoCellCoupledMsTwoCores}}},
+                       {"targets",
+                        {{"roofline_fraction_large_lattice", kRooflineTarget},
+                         {"coupled_ms_per_step_one_core", kCoupledTargetMsOneCore}}},
+                       {"runs", runs}};
+  if (!options.common.output_directory.empty()) {
+    std::filesystem::create_directories(options.common.output_directory);
+    io::write_text_atomically(options.common.output_directory / "bench.json",
+                              report.dump(2) + "\n");
+  }
+  if (options.common.json) {
+    std::cout << report.dump(2) << '\n';
+  } else {
+    print_text(report, options.common.verbose);
+  }
+}
+
+void attach_bench_command(CLI::App& application) {
+  auto* command = application.add_subcommand(
+      "bench", "Measure memory bandwidth, fluid MLUPS and the coupled step against HemoCell");
+  auto options = std::make_shared<BenchOptions>();
+  add_common_options(command, options->common);
+  command
+      ->add_option("--large-lattice", options->large_lattice,
+                   "Extent of the out-of-cache lattice (default: twice the last-level cache)")
+      ->expected(3)
+      ->type_name("NX NY NZ")
+      ->check(CLI::PositiveNumber);
+  command->footer(
+      "--threads N sets the 'all threads' column (default: every logical CPU); --output DIR also "
+      "writes DIR/bench.json; --verbose adds the time of each phase of the coupled step.");
+  command->callback([options] { run_bench(*options); });
+}
+
+const bool registered = register_command({"bench", 95, attach_bench_command});
+
+}  // namespace
+}  // namespace rbcsim::cli

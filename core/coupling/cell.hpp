@@ -1,0 +1,87 @@
+// One cell of a coupled simulation (DESIGN.md §3.3): its membrane model, where its vertices are,
+// and the arrays each step fills. Vertex positions live in lattice units (node (i, j, k) at
+// (i, j, k)), where the immersed boundary works; the membrane works in um and pN, so each step
+// converts once each way. The driver (coupled_simulation.hpp) calls the phases in order.
+//
+// Positions are never wrapped into a periodic box: the IBM wraps node indices instead, so a
+// cell's shape and distance travelled stay continuous.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "common/vec3.hpp"
+#include "ibm/delta_kernels.hpp"
+#include "ibm/grid_view.hpp"
+#include "ibm/interpolation_stencil.hpp"
+#include "ibm/point_advance.hpp"
+#include "lattice/fluid_kernel.hpp"
+#include "membrane/membrane_model.hpp"
+
+namespace rbcsim::coupling {
+
+// Where the lattice sits in space: node (i, j, k) at origin_um + dx_um * (i, j, k), the
+// node-centred convention of the geometry module (geometry/lattice_grid.hpp).
+struct LatticeFrame {
+  Vec3 origin_um = Vec3::Zero();
+  double dx_um = 1.0;
+
+  Vec3 to_lattice(const Vec3& position_um) const { return (position_um - origin_um) / dx_um; }
+  Vec3 to_um(const Vec3& position_lu) const { return origin_um + dx_um * position_lu; }
+};
+
+class Cell {
+ public:
+  // `positions_um` holds one initial position per vertex of the model (usually the stress-free
+  // mesh itself, placed in the domain). Throws std::invalid_argument for a count mismatch.
+  Cell(membrane::MembraneModel model, std::span<const Vec3> positions_um, const LatticeFrame& frame,
+       const ibm::PointAdvanceScheme& advance_scheme);
+
+  const membrane::MembraneModel& model() const { return model_; }
+  std::size_t vertex_count() const { return positions_lu_.size(); }
+
+  std::span<const Vec3> positions_lu() const { return positions_lu_; }
+  // Where the latest forces were computed (um): the positions at the start of the latest step.
+  std::span<const Vec3> positions_um() const { return positions_um_; }
+  // The positions before the latest advance, lattice units.
+  std::span<const Vec3> previous_positions_lu() const { return previous_positions_lu_; }
+  const membrane::MembraneForces& membrane_forces() const { return membrane_forces_; }
+  std::span<const Vec3> external_forces_pN() const { return external_forces_pN_; }
+  // Membrane (capped) plus external force per vertex: what the latest step spread, pN.
+  std::span<const Vec3> total_forces_pN() const { return total_forces_pN_; }
+  // The fluid velocity interpolated at the vertices in the latest step, lattice units.
+  std::span<const Vec3> velocities_lu() const { return velocities_lu_; }
+  // Mean vertex position, summed in vertex order (thread-count independent), lattice units.
+  Vec3 centroid_lu() const;
+
+  // Step phase 1: membrane forces at the current positions (the external forces are zeroed, for
+  // the driver's hooks to add to). Throws RuntimeFailure from the membrane (a deviation at its
+  // limit, a non-finite force).
+  void compute_membrane_forces(const LatticeFrame& frame);
+  std::span<Vec3> external_forces_pN() { return external_forces_pN_; }
+  // Phase 2: total = membrane + external; builds the stencil once for this step and spreads
+  // total * lattice_force_per_pN into `force_density`. Throws RuntimeFailure for a non-finite
+  // total force, or from the stencil (a vertex with no fluid node in reach).
+  void spread_forces(double lattice_force_per_pN, const ibm::DeltaKernel& kernel,
+                     const ibm::GridView& grid, const std::uint8_t* solid_mask,
+                     lattice::VectorField& force_density);
+  // Phases 4-5: interpolates `velocity` with the same stencil, then moves the vertices (dt = 1).
+  void interpolate_and_advance(const ibm::GridView& grid, const lattice::VectorField& velocity);
+
+ private:
+  membrane::MembraneModel model_;
+  std::vector<Vec3> positions_lu_;
+  std::vector<Vec3> previous_positions_lu_;
+  std::vector<Vec3> positions_um_;
+  membrane::MembraneWorkspace workspace_;
+  membrane::MembraneForces membrane_forces_;
+  std::vector<Vec3> external_forces_pN_;
+  std::vector<Vec3> total_forces_pN_;
+  std::vector<Vec3> forces_lu_;
+  std::vector<Vec3> velocities_lu_;
+  ibm::InterpolationStencil stencil_;
+  ibm::PointAdvancer advancer_;
+};
+
+}  // namespace rbcsim::coupling

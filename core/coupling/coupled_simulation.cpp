@@ -1,0 +1,235 @@
+#include "coupling/coupled_simulation.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include "common/errors.hpp"
+#include "coupling/snapshot.hpp"
+
+namespace rbcsim::coupling {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Adds the seconds since `start` to `total` and restarts the clock.
+void lap(Clock::time_point& start, double& total) {
+  const auto now = Clock::now();
+  total += std::chrono::duration<double>(now - start).count();
+  start = now;
+}
+
+// The fluid is periodic along every axis (walls are nodes of the solid mask), except that the
+// IBM must not reach across a Lees-Edwards plane, whose images slide: a cell touching it stops the
+// run as having left the domain (many-cell runs will need the shifted images).
+ibm::GridView grid_view_of(const lattice::FluidSolver& fluid) {
+  const auto& grid = fluid.grid();
+  const bool sliding_y = fluid.parameters().lees_edwards_velocity.has_value();
+  return {grid.nx(), grid.ny(), grid.nz(), true, !sliding_y, true};
+}
+
+std::string cell_label(std::size_t cell) { return "cell " + std::to_string(cell); }
+
+}  // namespace
+
+double StepPhaseTimes::total_s() const {
+  return membrane_s + spread_s + fluid_s + advance_s + checks_s + observers_s;
+}
+
+CoupledSimulation::CoupledSimulation(std::unique_ptr<lattice::FluidSolver> fluid,
+                                     const units::UnitConverter& units,
+                                     CouplingParameters parameters, const Vec3& origin_um)
+    : fluid_(std::move(fluid)),
+      units_(units),
+      parameters_(std::move(parameters)),
+      frame_{origin_um, units.to_physical(units::PhysicalUnit::length_um, 1.0)},
+      grid_(grid_view_of(*fluid_)),
+      kernel_(&ibm::find_delta_kernel(parameters_.kernel)),
+      advance_scheme_(&ibm::find_point_advance_scheme(parameters_.point_advance)),
+      lattice_force_per_pN_(units.to_lattice(units::PhysicalUnit::force_pN, 1.0)) {}
+
+std::size_t CoupledSimulation::add_cell(membrane::MembraneModel model,
+                                        std::span<const Vec3> positions_um) {
+  const std::size_t index = cells_.size();
+  Cell cell(std::move(model), positions_um, frame_, *advance_scheme_);
+  if (const auto problem =
+          find_domain_exit(cell.positions_lu(), grid_, fluid_->solid_mask().data())) {
+    throw InputError(cell_label(index),
+                     *problem + " at the start: the cell does not fit the domain");
+  }
+  // Forces at the initial shape: the first snapshot shows them, and a shape already at a force
+  // limit is refused here rather than at step 1.
+  try {
+    cell.compute_membrane_forces(frame_);
+  } catch (const RuntimeFailure& failure) {
+    throw InputError(cell_label(index), std::string("initial shape: ") + failure.what());
+  }
+  cells_.push_back(std::move(cell));
+  force_cap_monitors_.emplace_back();
+  return index;
+}
+
+void CoupledSimulation::add_observer(Observer observer) {
+  if (observer.interval_steps == 0) {
+    throw std::invalid_argument("observer '" + observer.name + "': interval of 0 steps");
+  }
+  if (std::ranges::any_of(observers_, [&](const RegisteredObserver& registered) {
+        return registered.observer.name == observer.name;
+      })) {
+    throw std::invalid_argument("observer '" + observer.name + "' is already registered");
+  }
+  observers_.push_back({std::move(observer), std::nullopt});
+}
+
+void CoupledSimulation::add_external_force(ExternalForce force) {
+  external_forces_.push_back(std::move(force));
+}
+
+void CoupledSimulation::add_stop_criterion(std::unique_ptr<StopCriterion> criterion) {
+  stop_criteria_.push_back(std::move(criterion));
+}
+
+double CoupledSimulation::time_s() const {
+  return units_.to_physical(units::PhysicalUnit::time_s, static_cast<double>(time_step_));
+}
+
+std::vector<std::size_t> CoupledSimulation::capped_steps_per_cell() const {
+  std::vector<std::size_t> steps;
+  for (const auto& monitor : force_cap_monitors_) steps.push_back(monitor.steps_with_capping());
+  return steps;
+}
+
+void CoupledSimulation::spread_forces() {
+  auto start = Clock::now();
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    try {
+      cells_[k].compute_membrane_forces(frame_);
+      for (const auto& force : external_forces_) {
+        force(k, cells_[k], cells_[k].external_forces_pN());
+      }
+    } catch (const RuntimeFailure& failure) {
+      fail(k, failure.what());
+    }
+  }
+  lap(start, phase_times_.membrane_s);
+  auto& force_density = fluid_->force_density();
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    try {
+      cells_[k].spread_forces(lattice_force_per_pN_, *kernel_, grid_, fluid_->solid_mask().data(),
+                              force_density);
+    } catch (const RuntimeFailure& failure) {
+      fail(k, failure.what());
+    }
+  }
+  lap(start, phase_times_.spread_s);
+  forces_spread_ = true;
+}
+
+void CoupledSimulation::advance_fluid() {
+  fluid_->step();
+  if ((time_step_ + 1) % parameters_.stability.fluid_check_interval_steps == 0) {
+    try {
+      fluid_->require_finite_velocity();
+    } catch (const RuntimeFailure& failure) {
+      fail(std::nullopt, failure.what());
+    }
+  }
+}
+
+void CoupledSimulation::advance_cells() {
+  for (auto& cell : cells_) cell.interpolate_and_advance(grid_, fluid_->velocity());
+}
+
+void CoupledSimulation::check_cells() {
+  const auto& limits = parameters_.stability;
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    const Cell& cell = cells_[k];
+    auto problem = find_vertex_motion_problem(cell.previous_positions_lu(), cell.positions_lu(),
+                                              cell.velocities_lu(), limits.max_vertex_step_lu);
+    if (!problem)
+      problem = find_domain_exit(cell.positions_lu(), grid_, fluid_->solid_mask().data());
+    if (!problem) {
+      problem = force_cap_monitors_[k].record(
+          cell.membrane_forces().capped_vertex_count, cell.vertex_count(),
+          cell.model().parameters().vertex_force_cap_pN, limits);
+    }
+    if (problem) fail(k, *problem);
+  }
+}
+
+void CoupledSimulation::step() {
+  if (!forces_spread_) spread_forces();
+  auto start = Clock::now();
+  advance_fluid();
+  lap(start, phase_times_.fluid_s);
+  advance_cells();
+  lap(start, phase_times_.advance_s);
+  check_cells();
+  lap(start, phase_times_.checks_s);
+  forces_spread_ = false;
+  ++time_step_;
+  ++phase_times_.steps;
+  notify_due_observers();
+  lap(start, phase_times_.observers_s);
+}
+
+void CoupledSimulation::notify(RegisteredObserver& registered) {
+  registered.observer.observe(*this);
+  registered.last_observed_step = time_step_;
+}
+
+void CoupledSimulation::notify_due_observers() {
+  for (auto& registered : observers_) {
+    if (time_step_ % registered.observer.interval_steps == 0) notify(registered);
+  }
+}
+
+void CoupledSimulation::observe_all() {
+  for (auto& registered : observers_) notify(registered);
+}
+
+std::optional<std::string> CoupledSimulation::stop_reason() {
+  for (auto& criterion : stop_criteria_) {
+    if (auto reason = criterion->check(*this)) return reason;
+  }
+  return std::nullopt;
+}
+
+RunSummary CoupledSimulation::run() {
+  if (stop_criteria_.empty()) {
+    throw std::logic_error("CoupledSimulation::run needs at least one stop criterion");
+  }
+  if (time_step_ == 0) observe_all();
+  RunSummary summary;
+  std::optional<std::string> reason;
+  while (!reason) {
+    step();
+    ++summary.steps;
+    reason = stop_reason();
+  }
+  for (auto& registered : observers_) {
+    if (registered.last_observed_step != time_step_) notify(registered);
+  }
+  summary.time_s = time_s();
+  summary.stop_reason = *reason;
+  summary.capped_steps_per_cell = capped_steps_per_cell();
+  return summary;
+}
+
+void CoupledSimulation::fail(std::optional<std::size_t> cell, const std::string& reason) const {
+  std::string where = "step " + std::to_string(time_step_ + 1) + ", " +
+                      (cell ? cell_label(*cell) : std::string("fluid")) + ": " + reason;
+  if (parameters_.run_directory.empty()) {
+    throw RuntimeFailure(where + "; no dump (no run directory)");
+  }
+  const auto directory = parameters_.run_directory / "failure";
+  try {
+    write_failure_dump(directory, *this, cell, reason);
+  } catch (const std::exception& dump_error) {
+    throw RuntimeFailure(where + "; the dump to " + directory.string() +
+                         " failed: " + dump_error.what());
+  }
+  throw RuntimeFailure(where + "; dump written to " + directory.string());
+}
+
+}  // namespace rbcsim::coupling

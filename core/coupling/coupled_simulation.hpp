@@ -1,0 +1,153 @@
+// The coupled lattice Boltzmann - immersed boundary - membrane time loop (DESIGN.md §3.3) for a
+// list of cells (one now, many later). One step:
+//   1. membrane forces at the current vertex positions, plus the external-force hooks (tweezers);
+//   2. pN -> lattice force, one interpolation stencil per cell, spread onto the force density
+//      (the sum of the spread forces equals the sum of the vertex forces);
+//   3. fluid collide-and-stream with that force (Guo);
+//   4. the Guo-corrected velocity interpolated at the vertices with the same stencil;
+//   5. vertices advanced (forward Euler by default, `ibm.point_advance`);
+//   6. stability checks (stability.hpp), then the observers that are due.
+// Every phase is deterministic, so results do not depend on the number of OpenMP threads.
+//
+// An instability stops the run (DESIGN.md §6): if a run directory is set, a dump (membrane .vtp
+// of every cell, fluid .vti, failure.json) is written to <run directory>/failure/, then
+// RuntimeFailure("step N, cell K: reason; dump written to DIR") is thrown (exit code 1).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "coupling/cell.hpp"
+#include "coupling/stability.hpp"
+#include "coupling/stop_criteria.hpp"
+#include "ibm/delta_kernels.hpp"
+#include "ibm/grid_view.hpp"
+#include "ibm/point_advance.hpp"
+#include "lattice/fluid_solver.hpp"
+#include "units/unit_converter.hpp"
+
+namespace rbcsim::coupling {
+
+struct CouplingParameters {
+  std::string kernel = "phi2";          // ibm.kernel: a name of ibm::delta_kernels()
+  std::string point_advance = "euler";  // ibm.point_advance: a name of ibm::point_advance_schemes()
+  StabilityLimits stability;
+  // Where failure dumps go (and what observers may write to); empty: no dump.
+  std::filesystem::path run_directory;
+};
+
+class CoupledSimulation;
+
+// Called every `interval_steps` steps, after the step's checks, with the simulation to read.
+struct Observer {
+  std::string name;  // unique within a simulation
+  std::size_t interval_steps = 1;
+  std::function<void(const CoupledSimulation&)> observe;
+};
+
+// Adds forces (pN) to a cell's vertices every step, e.g. optical tweezers. Called after the
+// membrane forces, with the cell's positions_um() current.
+using ExternalForce =
+    std::function<void(std::size_t cell_index, const Cell& cell, std::span<Vec3> forces_pN)>;
+
+// Wall-clock seconds spent in each phase since construction or the last reset.
+struct StepPhaseTimes {
+  double membrane_s = 0.0;   // phase 1 (membrane and external forces)
+  double spread_s = 0.0;     // phase 2 (stencils, spreading)
+  double fluid_s = 0.0;      // phase 3
+  double advance_s = 0.0;    // phases 4-5 (interpolation, vertex advance)
+  double checks_s = 0.0;     // phase 6, the stability checks
+  double observers_s = 0.0;  // observers (output, measurements)
+  std::size_t steps = 0;
+
+  double total_s() const;
+};
+
+struct RunSummary {
+  std::size_t steps = 0;  // taken by this run() call
+  double time_s = 0.0;    // physical time of the simulation when it stopped
+  std::string stop_reason;
+  // Per cell: steps in which the membrane's force cap clamped at least one vertex.
+  std::vector<std::size_t> capped_steps_per_cell;
+};
+
+class CoupledSimulation {
+ public:
+  // The fluid's geometry (walls, inlets) must be set before; the simulation owns it from here.
+  // `units` converts forces and fixes dx; `origin_um` is where lattice node (0, 0, 0) sits.
+  // Throws InputError for an unknown kernel or point-advance scheme.
+  CoupledSimulation(std::unique_ptr<lattice::FluidSolver> fluid, const units::UnitConverter& units,
+                    CouplingParameters parameters, const Vec3& origin_um = Vec3::Zero());
+
+  // Adds a cell whose vertices start at positions_um (one per vertex of the model); returns its
+  // index. Throws InputError naming the cell if a vertex lies outside the domain or in a wall.
+  std::size_t add_cell(membrane::MembraneModel model, std::span<const Vec3> positions_um);
+  // Throws std::invalid_argument for a duplicate name or an interval of 0.
+  void add_observer(Observer observer);
+  void add_external_force(ExternalForce force);
+  void add_stop_criterion(std::unique_ptr<StopCriterion> criterion);
+
+  // One coupled step (phases 1-6).
+  void step();
+  // Phases 1-2 alone: the forces of this step spread onto the fluid's force density, which the
+  // next step() then uses instead of spreading again. For tests and diagnostics.
+  void spread_forces();
+  // Steps until a stop criterion holds (std::logic_error if there is none). Observers see the
+  // initial state (when no step was taken yet) and the final state.
+  RunSummary run();
+  // Calls every observer now (for instance for the initial state).
+  void observe_all();
+
+  const lattice::FluidSolver& fluid() const { return *fluid_; }
+  std::span<const Cell> cells() const { return cells_; }
+  const Cell& cell(std::size_t index) const { return cells_.at(index); }
+  const units::UnitConverter& units() const { return units_; }
+  const LatticeFrame& frame() const { return frame_; }
+  const ibm::GridView& grid_view() const { return grid_; }
+  const CouplingParameters& parameters() const { return parameters_; }
+  std::size_t time_step() const { return time_step_; }
+  double time_s() const;
+  const StepPhaseTimes& phase_times() const { return phase_times_; }
+  void reset_phase_times() { phase_times_ = {}; }
+  std::vector<std::size_t> capped_steps_per_cell() const;
+
+ private:
+  struct RegisteredObserver {
+    Observer observer;
+    std::optional<std::size_t> last_observed_step;
+  };
+
+  void advance_fluid();
+  void advance_cells();
+  void check_cells();
+  void notify_due_observers();
+  void notify(RegisteredObserver& registered);
+  std::optional<std::string> stop_reason();
+  // Writes the failure dump (if there is a run directory) and throws RuntimeFailure.
+  [[noreturn]] void fail(std::optional<std::size_t> cell, const std::string& reason) const;
+
+  std::unique_ptr<lattice::FluidSolver> fluid_;
+  units::UnitConverter units_;
+  CouplingParameters parameters_;
+  LatticeFrame frame_;
+  ibm::GridView grid_;
+  const ibm::DeltaKernel* kernel_;
+  const ibm::PointAdvanceScheme* advance_scheme_;
+  double lattice_force_per_pN_;
+  std::vector<Cell> cells_;
+  std::vector<ForceCapMonitor> force_cap_monitors_;
+  std::vector<ExternalForce> external_forces_;
+  std::vector<RegisteredObserver> observers_;
+  std::vector<std::unique_ptr<StopCriterion>> stop_criteria_;
+  bool forces_spread_ = false;
+  std::size_t time_step_ = 0;
+  StepPhaseTimes phase_times_;
+};
+
+}  // namespace rbcsim::coupling

@@ -1,0 +1,47 @@
+// ParaView output of a coupled simulation (DESIGN.md §1 "Outputs of a run directory"), written
+// atomically through core/io:
+//   membrane  VTK PolyData (.vtp), positions in um, per-vertex arrays
+//               force_<term>_pN     each enabled membrane term (unclamped)
+//               membrane_force_pN   their sum, after the vertex force cap
+//               external_force_pN   the hooks' forces (tweezers)
+//               total_force_pN      membrane + external: what the IBM spread
+//               velocity_m_per_s    the interpolated fluid velocity
+//             (forces and velocity of the latest step, at the positions one step earlier);
+//   fluid     VTK ImageData (.vti) on the lattice nodes, in um like the membrane:
+//               velocity_m_per_s, density_kg_per_m3 (0 at non-fluid nodes), solid_mask (the
+//               lattice's node kinds: 0 fluid, 1 wall, 2 pressure outlet);
+//   series    one .pvd collection per cell and one for the fluid, time in seconds.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "coupling/coupled_simulation.hpp"
+
+namespace rbcsim::coupling {
+
+void write_cell_snapshot(const std::filesystem::path& path, const CoupledSimulation& simulation,
+                         std::size_t cell_index);
+void write_fluid_snapshot(const std::filesystem::path& path, const CoupledSimulation& simulation);
+
+// Snapshot intervals in steps; 0: none of that kind.
+struct SnapshotIntervals {
+  std::size_t membrane_steps = 0;
+  std::size_t fluid_steps = 0;
+};
+
+// Registers the observers "vtk_membrane" and "vtk_fluid", which write
+// <directory>/vtk/cell<K>_<step>.vtp and <directory>/vtk/fluid_<step>.vti and rewrite
+// <directory>/cell<K>.pvd and <directory>/fluid.pvd after each snapshot, so that an interrupted
+// run still leaves a valid collection.
+void add_vtk_output(CoupledSimulation& simulation, const std::filesystem::path& directory,
+                    const SnapshotIntervals& intervals);
+
+// The diagnosis dump of a failed step into <directory>: cell<K>.vtp for every cell, fluid.vti,
+// and failure.json {"step", "time_s", "cell" (or null), "reason", "files"}.
+void write_failure_dump(const std::filesystem::path& directory, const CoupledSimulation& simulation,
+                        std::optional<std::size_t> cell, const std::string& reason);
+
+}  // namespace rbcsim::coupling

@@ -1,0 +1,37 @@
+// The registry of membrane kernels (`membrane.kernel`) and what the kernels share.
+#include "membrane/membrane_kernel.hpp"
+
+#include <string>
+
+#include "common/errors.hpp"
+
+namespace rbcsim::membrane {
+namespace {
+
+constexpr MembraneKernelEntry kKernels[] = {
+    {"optimised", make_optimised_kernel},
+    {"reference", make_reference_kernel},
+};
+
+}  // namespace
+
+std::span<const MembraneKernelEntry> membrane_kernel_table() { return kKernels; }
+
+const MembraneKernelEntry& find_membrane_kernel(std::string_view name) {
+  std::string known;
+  for (const auto& entry : kKernels) {
+    if (entry.name == name) return entry;
+    known += (known.empty() ? "" : ", ") + std::string(entry.name);
+  }
+  throw InputError("membrane.kernel",
+                   "unknown force kernel '" + std::string(name) + "' (known: " + known + ")");
+}
+
+void require_finite_forces(std::size_t first_non_finite, std::size_t vertex_count) {
+  if (first_non_finite < vertex_count) {
+    throw RuntimeFailure("membrane forces: the force on vertex " +
+                         std::to_string(first_non_finite) + " is not finite (unstable state)");
+  }
+}
+
+}  // namespace rbcsim::membrane

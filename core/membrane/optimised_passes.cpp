@@ -1,0 +1,306 @@
+// The vectorised element passes. Each loop body is plain arithmetic on simd::Xyz (no Eigen, no
+// library calls), its loop is `omp simd`, and this file is compiled with -fno-math-errno
+// -fno-trapping-math (CMakeLists.txt) so that sqrt and the selects of the branch-free atan2 can
+// be widened; neither flag changes a result. -ffp-contract=off keeps every operation rounded as
+// written, so the baseline, AVX2 and AVX-512 clones compute the same bits. After each loop a
+// scalar loop over the block forms its partial sums in element order.
+#include "membrane/optimised_passes.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "membrane/simd_math.hpp"
+
+namespace rbcsim::membrane::optimised {
+namespace {
+
+using simd::Xyz;
+using simd::XyzArrays;
+
+// The elements of one block. 32-bit indices: with a 64-bit induction variable GCC 12 does not
+// vectorise the loads of the vertex positions.
+struct BlockRange {
+  std::int32_t begin;
+  std::int32_t end;
+};
+BlockRange block_range(std::size_t block, std::size_t elements) {
+  const std::size_t begin = block * kBlockSize;
+  return {static_cast<std::int32_t>(begin),
+          static_cast<std::int32_t>(std::min(elements, begin + kBlockSize))};
+}
+
+XyzArrays arrays(Vec3Arrays& vectors) {
+  return {vectors.x.data(), vectors.y.data(), vectors.z.data()};
+}
+// The same from entry `first` on.
+XyzArrays shifted(Vec3Arrays& vectors, std::size_t first) {
+  return {vectors.x.data() + first, vectors.y.data() + first, vectors.z.data() + first};
+}
+
+// The two distributions of the angle terms (hinge.hpp), as the edge pass computes their patterns.
+enum class Pattern {
+  // P = dtheta/dx (Bridson, Marino & Fedkiw 2003): dtheta/dwing_k = -N_k l / |N_k|^2, and the
+  // ends follow from alpha_k = (wing_k - vertex0) . e / l^2; weights l and theta.
+  gradient,
+  // Wings -n_k, both ends (n0 + n1)/2 (Eqs. 15-18 with Eq. 18's sign), pushed with a = -F, F the
+  // signed push of Eqs. 7, 10, 11; weights 1 and 0.
+  paper,
+};
+
+// `gradient`: c = K slope / (2 |S0|) with K / |S0| = sqrt 3 k kBT / L0 (curvature_sum_term.cpp).
+double gradient_cell_scale(double force_scale_pN) { return std::sqrt(3.0) / 2.0 * force_scale_pN; }
+// `paper` pushes with the law's force itself.
+double paper_bend_scale(double force_scale_pN, double) { return force_scale_pN; }
+double paper_cell_scale(double force_scale_pN) { return force_scale_pN; }
+
+// The loop body uses only Xyz values and plain doubles, no structs of them: a struct would stay
+// in memory (OpenMP privatises it per lane) and keep the loop from vectorising.
+template <Pattern kPattern>
+[[gnu::always_inline]] inline void measure_edges(const FusedConstants& constants,
+                                                 const HingeStencils& hinges, BlockRange range,
+                                                 const double* positions_xyz,
+                                                 OptimisedScratch& scratch) {
+  const auto* vertices = hinges.vertices.data();
+  const double* reference_lengths = hinges.reference_lengths_um.data();
+  const double* inverse_reference_lengths = hinges.inverse_reference_lengths_per_um.data();
+  const double* reference_angles = hinges.reference_angles_rad.data();
+  const std::array<XyzArrays, 4> patterns = {
+      arrays(scratch.hinge_patterns[0]), arrays(scratch.hinge_patterns[1]),
+      arrays(scratch.hinge_patterns[2]), arrays(scratch.hinge_patterns[3])};
+  const XyzArrays unit_axes = arrays(scratch.unit_axes);
+  double* bend_coefficients = scratch.bend_coefficients.data();
+  double* link_coefficients = scratch.link_coefficients_pN.data();
+  double* angle_weights = scratch.angle_weights.data();
+  double* length_weights = scratch.length_weights.data();
+  double* angle_signs = scratch.angle_signs.data();
+  double* link_deviations = scratch.link_deviations.data();
+  double* bend_deviations = scratch.bend_deviations_rad.data();
+  double* half_curvatures = scratch.half_curvatures_um.data();
+  // Switches as 0/1 numbers: GCC vectorises a select on a compared double, not on a bool. Without
+  // angle terms the patterns are zero, so a degenerate hinge cannot add a NaN elsewhere.
+  const double link_on = constants.enabled[kLink] ? 1.0 : 0.0;
+  const double bend_on = constants.enabled[kBend] ? 1.0 : 0.0;
+  const double patterns_on = constants.angle_terms ? 1.0 : 0.0;
+  const ScaledLaw link = constants.link;
+  const ScaledLaw bend = constants.bend;
+
+#pragma omp simd
+  for (std::int32_t e = range.begin; e < range.end; ++e) {
+    const Xyz vertex0 = simd::load(positions_xyz, vertices[e][0]);
+    const Xyz vertex1 = simd::load(positions_xyz, vertices[e][1]);
+    const Xyz wing0 = simd::load(positions_xyz, vertices[e][2]);
+    const Xyz wing1 = simd::load(positions_xyz, vertices[e][3]);
+    const Xyz axis = vertex1 - vertex0;
+    const double length = std::sqrt(dot(axis, axis));
+    const double inverse_length = 1.0 / length;
+    // Outward normals of the two triangles, |N_k| = 2 A_k (hinge.hpp).
+    const Xyz normal0 = cross(axis, wing0 - vertex0);
+    const Xyz normal1 = cross(vertex0 - vertex1, wing1 - vertex1);
+    // As mesh::signed_dihedral_angle_rad: atan2 of sin and cos, both scaled by |N0||N1|.
+    const double angle_rad =
+        simd::atan2(dot(cross(normal0, normal1), axis) * inverse_length, dot(normal0, normal1));
+
+    if constexpr (kPattern == Pattern::gradient) {
+      const Xyz wing0_gradient = (-length / dot(normal0, normal0)) * normal0;
+      const Xyz wing1_gradient = (-length / dot(normal1, normal1)) * normal1;
+      const double inverse_length_squared = inverse_length * inverse_length;
+      const double alpha0 = dot(wing0 - vertex0, axis) * inverse_length_squared;
+      const double alpha1 = dot(wing1 - vertex0, axis) * inverse_length_squared;
+      patterns[0].store_where(e, (alpha0 - 1.0) * wing0_gradient + (alpha1 - 1.0) * wing1_gradient,
+                              patterns_on);
+      patterns[1].store_where(e, (-alpha0) * wing0_gradient - alpha1 * wing1_gradient, patterns_on);
+      patterns[2].store_where(e, wing0_gradient, patterns_on);
+      patterns[3].store_where(e, wing1_gradient, patterns_on);
+      angle_weights[e] = length;
+      length_weights[e] = angle_rad;
+    } else {
+      const Xyz unit_normal0 = (1.0 / std::sqrt(dot(normal0, normal0))) * normal0;
+      const Xyz unit_normal1 = (1.0 / std::sqrt(dot(normal1, normal1))) * normal1;
+      const Xyz ends = 0.5 * (unit_normal0 + unit_normal1);
+      patterns[0].store_where(e, ends, patterns_on);
+      patterns[1].store_where(e, ends, patterns_on);
+      patterns[2].store_where(e, (-1.0) * unit_normal0, patterns_on);
+      patterns[3].store_where(e, (-1.0) * unit_normal1, patterns_on);
+      angle_weights[e] = 1.0;
+      length_weights[e] = 0.0;
+    }
+    angle_signs[e] = simd::sign(angle_rad);
+    unit_axes.store(e, inverse_length * axis);
+
+    const double link_deviation = (length - reference_lengths[e]) * inverse_reference_lengths[e];
+    const double bend_deviation_rad = angle_rad - reference_angles[e];
+    link_deviations[e] = link_deviation;
+    bend_deviations[e] = bend_deviation_rad;
+    link_coefficients[e] = simd::where(link_on, link.coefficient(link_deviation));
+    bend_coefficients[e] = simd::where(bend_on, bend.coefficient(bend_deviation_rad));
+    half_curvatures[e] = 0.5 * length * angle_rad;
+  }
+
+  EdgeBlockSums sums;
+  for (std::int32_t e = range.begin; e < range.end; ++e) {
+    sums.link_max_abs_deviation =
+        simd::max_magnitude(sums.link_max_abs_deviation, link_deviations[e]);
+    sums.bend_max_abs_deviation =
+        simd::max_magnitude(sums.bend_max_abs_deviation, bend_deviations[e]);
+    sums.signed_curvature_um += half_curvatures[e];
+    sums.absolute_curvature_um += std::abs(half_curvatures[e]);
+  }
+  scratch.edge_blocks[static_cast<std::size_t>(range.begin) / kBlockSize] = sums;
+}
+
+template <Pattern kPattern>
+RBCSIM_MEMBRANE_VECTOR_CLONES void measure_edge_block(const FusedConstants& constants,
+                                                      const HingeStencils& hinges,
+                                                      std::size_t block,
+                                                      const double* positions_xyz,
+                                                      OptimisedScratch& scratch) {
+  measure_edges<kPattern>(constants, hinges, block_range(block, hinges.vertices.size()),
+                          positions_xyz, scratch);
+}
+
+constexpr FusedDistribution kFusedDistributions[] = {
+    {"paper", measure_edge_block<Pattern::paper>, paper_bend_scale, paper_cell_scale},
+    {"gradient", measure_edge_block<Pattern::gradient>, gradient_bend_scale, gradient_cell_scale},
+};
+
+}  // namespace
+
+std::span<const FusedDistribution> fused_distribution_table() { return kFusedDistributions; }
+
+// F = -(a P_r + b g_r u) per role (OptimisedScratch), with g = (-1, +1, 0, 0).
+RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_edge_block(const SlotWeights& weights, std::size_t block,
+                                                    OptimisedScratch& scratch) {
+  const std::size_t edges = scratch.angle_signs.size();
+  const BlockRange range = block_range(block, edges);
+  std::array<const double*, 4> pattern_x;
+  std::array<const double*, 4> pattern_y;
+  std::array<const double*, 4> pattern_z;
+  for (std::size_t role = 0; role < 4; ++role) {
+    pattern_x[role] = scratch.hinge_patterns[role].x.data();
+    pattern_y[role] = scratch.hinge_patterns[role].y.data();
+    pattern_z[role] = scratch.hinge_patterns[role].z.data();
+  }
+  const double* unit_x = scratch.unit_axes.x.data();
+  const double* unit_y = scratch.unit_axes.y.data();
+  const double* unit_z = scratch.unit_axes.z.data();
+  const double* bend_coefficients = scratch.bend_coefficients.data();
+  const double* link_coefficients = scratch.link_coefficients_pN.data();
+  const double* angle_weights = scratch.angle_weights.data();
+  const double* length_weights = scratch.length_weights.data();
+  const double* angle_signs = scratch.angle_signs.data();
+  const std::array<XyzArrays, 4> slots = {
+      shifted(scratch.slot_forces_pN, 0), shifted(scratch.slot_forces_pN, edges),
+      shifted(scratch.slot_forces_pN, 2 * edges), shifted(scratch.slot_forces_pN, 3 * edges)};
+  const double w_link = weights[kLink];
+  const double w_bend = weights[kBend];
+  const double c_area_difference = weights[kAreaDifference];
+  const double c_total_curvature = weights[kTotalCurvature];
+
+#pragma omp simd
+  for (std::int32_t e = range.begin; e < range.end; ++e) {
+    const double cell = c_area_difference + c_total_curvature * angle_signs[e];
+    const double a = w_bend * bend_coefficients[e] + cell * angle_weights[e];
+    const double b = w_link * link_coefficients[e] + cell * length_weights[e];
+    const Xyz along_axis = b * Xyz{unit_x[e], unit_y[e], unit_z[e]};
+    const auto push = [&](std::size_t role) {
+      return (-a) * Xyz{pattern_x[role][e], pattern_y[role][e], pattern_z[role][e]};
+    };
+    slots[0].store(e, push(0) + along_axis);
+    slots[1].store(e, push(1) - along_axis);
+    slots[2].store(e, push(2));
+    slots[3].store(e, push(3));
+  }
+}
+
+// F = w_area A_k + c_v N per corner k.
+RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_triangle_block(const SlotWeights& weights,
+                                                        std::size_t block,
+                                                        OptimisedScratch& scratch) {
+  const std::size_t triangles = scratch.area_deviations.size();
+  const std::size_t first_slot = 4 * scratch.angle_signs.size();
+  const BlockRange range = block_range(block, triangles);
+  const double* normal_x = scratch.triangle_normals_um2.x.data();
+  const double* normal_y = scratch.triangle_normals_um2.y.data();
+  const double* normal_z = scratch.triangle_normals_um2.z.data();
+  std::array<const double*, 3> area_x;
+  std::array<const double*, 3> area_y;
+  std::array<const double*, 3> area_z;
+  for (std::size_t corner = 0; corner < 3; ++corner) {
+    area_x[corner] = scratch.corner_area_forces_pN[corner].x.data();
+    area_y[corner] = scratch.corner_area_forces_pN[corner].y.data();
+    area_z[corner] = scratch.corner_area_forces_pN[corner].z.data();
+  }
+  const std::array<XyzArrays, 3> slots = {
+      shifted(scratch.slot_forces_pN, first_slot),
+      shifted(scratch.slot_forces_pN, first_slot + triangles),
+      shifted(scratch.slot_forces_pN, first_slot + 2 * triangles)};
+  const double w_area = weights[kArea];
+  const double c_volume = weights[kVolume];
+
+#pragma omp simd
+  for (std::int32_t t = range.begin; t < range.end; ++t) {
+    const Xyz volume = c_volume * Xyz{normal_x[t], normal_y[t], normal_z[t]};
+#pragma GCC unroll 3
+    for (std::size_t corner = 0; corner < 3; ++corner) {
+      slots[corner].store(
+          t, w_area * Xyz{area_x[corner][t], area_y[corner][t], area_z[corner][t]} + volume);
+    }
+  }
+}
+
+// K_b = (k_b kBT / L0) h, h = (sqrt 3 / 2) L0 (bending_term.cpp).
+double gradient_bend_scale(double force_scale_pN, double length_scale_um) {
+  return force_scale_pN * std::sqrt(3.0) / 2.0 * length_scale_um;
+}
+
+RBCSIM_MEMBRANE_VECTOR_CLONES void measure_triangle_block(const FusedConstants& constants,
+                                                          const CornerStencils& stencils,
+                                                          std::size_t block,
+                                                          const double* positions_xyz,
+                                                          OptimisedScratch& scratch) {
+  const BlockRange range = block_range(block, stencils.corners.size());
+  const auto* corners = stencils.corners.data();
+  const double* reference_areas = stencils.reference_areas_um2.data();
+  const double* inverse_reference_areas = stencils.inverse_reference_areas_per_um2.data();
+  const double* area_forces_per_um = stencils.area_forces_per_um.data();
+  const std::array<XyzArrays, 3> corner_forces = {arrays(scratch.corner_area_forces_pN[0]),
+                                                  arrays(scratch.corner_area_forces_pN[1]),
+                                                  arrays(scratch.corner_area_forces_pN[2])};
+  const XyzArrays normals = arrays(scratch.triangle_normals_um2);
+  double* area_deviations = scratch.area_deviations.data();
+  double* volume_shares = scratch.volume_shares_um3.data();
+  const double area_on = constants.enabled[kArea] ? 1.0 : 0.0;  // see measure_edges
+  const ScaledLaw area = constants.area;
+
+#pragma omp simd
+  for (std::int32_t t = range.begin; t < range.end; ++t) {
+    const Xyz a = simd::load(positions_xyz, corners[t][0]);
+    const Xyz b = simd::load(positions_xyz, corners[t][1]);
+    const Xyz c = simd::load(positions_xyz, corners[t][2]);
+    const Xyz normal = cross(b - a, c - a);
+    normals.store(t, normal);
+    const double normal_length = std::sqrt(dot(normal, normal));
+    const double deviation =
+        (0.5 * normal_length - reference_areas[t]) * inverse_reference_areas[t];
+    area_deviations[t] = deviation;
+    // Divergence theorem: (area vector . centroid) / 3 = N . (a + b + c) / 18.
+    volume_shares[t] = dot(normal, a + b + c) * (1.0 / 18.0);
+    // Corner i: -(k_a kBT / L0) slope(d) (3 / P0) n x (x_{i+2} - x_{i+1}) (area_term.cpp).
+    const double scale =
+        simd::where(area_on, -area.coefficient(deviation) * area_forces_per_um[t] / normal_length);
+    const Xyz scaled_normal = scale * normal;
+    corner_forces[0].store(t, cross(scaled_normal, c - b));
+    corner_forces[1].store(t, cross(scaled_normal, a - c));
+    corner_forces[2].store(t, cross(scaled_normal, b - a));
+  }
+
+  TriangleBlockSums sums;
+  for (std::int32_t t = range.begin; t < range.end; ++t) {
+    sums.area_max_abs_deviation =
+        simd::max_magnitude(sums.area_max_abs_deviation, area_deviations[t]);
+    sums.volume_um3 += volume_shares[t];
+  }
+  scratch.triangle_blocks[block] = sums;
+}
+
+}  // namespace rbcsim::membrane::optimised

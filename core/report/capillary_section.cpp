@@ -1,0 +1,121 @@
+// One cell through a stenosed capillary (DESIGN.md §4 capillary): deformation index against
+// time for every morphology (paper Fig. 13), transit times as bars, and whether their order is
+// the paper's.
+#include <algorithm>
+#include <array>
+
+#include "report/markup.hpp"
+#include "report/sections.hpp"
+#include "report/svg_plot.hpp"
+
+namespace rbcsim::report {
+namespace {
+
+constexpr std::string_view kTimeSeriesFile = "capillary_timeseries.csv";
+
+// The paper's conclusion: "The Discocyte RBC took less time, and the Stomatocyte II took more
+// time to travel through the narrow segment" (Fig. 17 and §4), echinocyte III in between.
+constexpr std::array<std::string_view, 3> kPaperTransitOrder{"discocyte", "echinocyte-III",
+                                                             "stomatocyte-II"};
+
+std::vector<svg::PlotPoint> deformation_over_time(const RunDirectory& run) {
+  const auto table = run.csv(std::string(kTimeSeriesFile));
+  const auto time_s = table.numbers("time_s");
+  const auto deformation_index = table.numbers("deformation_index");
+  std::vector<svg::PlotPoint> points;
+  for (std::size_t i = 0; i < time_s.size(); ++i)
+    points.push_back({time_s[i], deformation_index[i]});
+  return points;
+}
+
+double transit_time_s(const RunDirectory& run) {
+  return run.section().at("transit_time_s").number();
+}
+
+bool is_in_paper_order(const std::string& morphology) {
+  return std::find(kPaperTransitOrder.begin(), kPaperTransitOrder.end(), morphology) !=
+         kPaperTransitOrder.end();
+}
+
+// The morphologies of `runs` (one run each) by increasing transit time, against the paper.
+nlohmann::json transit_order(const std::string& terms, RunList runs, Section& section) {
+  std::stable_sort(runs.begin(), runs.end(), [](const RunDirectory* a, const RunDirectory* b) {
+    return transit_time_s(*a) < transit_time_s(*b);
+  });
+  std::vector<std::string> order;
+  std::vector<std::string> known_order;
+  std::string sentence = "Transit time order, " + terms + ": ";
+  for (const auto* run : runs) {
+    order.push_back(run->morphology);
+    if (is_in_paper_order(run->morphology)) known_order.push_back(run->morphology);
+    sentence += (order.size() > 1 ? " < " : "") + run->morphology + " (" +
+                format_significant(transit_time_s(*run)) + " s)";
+  }
+  std::vector<std::string> paper_order;
+  for (const auto morphology : kPaperTransitOrder) {
+    const auto present = std::find(known_order.begin(), known_order.end(), morphology);
+    if (present != known_order.end()) paper_order.emplace_back(morphology);
+  }
+  const bool agrees = known_order == paper_order;
+  section.blocks.emplace_back(
+      Paragraph{sentence + ". The paper finds discocyte < echinocyte III < stomatocyte II: " +
+                (agrees ? "same order." : "different order.")});
+  return {{"terms", terms},
+          {"order", order},
+          {"paper_order", paper_order},
+          {"agrees_with_paper", agrees}};
+}
+
+// Per set of membrane terms in which every morphology ran once and at least two ran: the order.
+nlohmann::json transit_orders(const RunList& runs, Section& section) {
+  auto orders = nlohmann::json::array();
+  for (const auto& terms : distinct(runs, &RunDirectory::terms)) {
+    RunList group;
+    std::vector<std::string> morphologies;
+    for (const auto* run : runs) {
+      if (run->terms != terms) continue;
+      group.push_back(run);
+      morphologies.push_back(run->morphology);
+    }
+    std::sort(morphologies.begin(), morphologies.end());
+    const bool one_run_each =
+        std::adjacent_find(morphologies.begin(), morphologies.end()) == morphologies.end();
+    if (group.size() >= 2 && one_run_each) orders.push_back(transit_order(terms, group, section));
+  }
+  return orders;
+}
+
+}  // namespace
+
+Section build_capillary_section(const RunList& all_runs) {
+  Section section{"capillary", "Capillary transit", {}, {}};
+  const auto runs = succeeded_runs(all_runs, section);
+  const auto labels = distinct_labels(runs, morphology_and_terms);
+
+  svg::LinePlot deformation{"Deformation index vs time", "time (s)", "deformation index DI", {}};
+  svg::BarChart transit{"Transit time through the narrow section", "transit time (s)", {}};
+  std::vector<LabelledObject> rows;
+  auto run_summaries = nlohmann::json::array();
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto colour = svg::palette_colour(i);
+    deformation.series.push_back(
+        {labels[i], deformation_over_time(*runs[i]), colour, svg::Marker::none});
+    transit.bars.push_back({labels[i], transit_time_s(*runs[i]), colour});
+    const auto capillary = runs[i]->section();
+    rows.push_back({labels[i], capillary.object()});
+    run_summaries.push_back(run_summary(*runs[i]));
+  }
+  section.blocks.emplace_back(
+      Figure{svg::render_line_plot(deformation),
+             "DI = (length in x) / (length in y) of the cell (paper Eq. 19) from " +
+                 std::string(kTimeSeriesFile) + "; it peaks in the throat (paper Fig. 13)."});
+  section.blocks.emplace_back(
+      Figure{svg::render_bar_chart(transit), "Time to cross the narrow section of the capillary."});
+  const auto orders = transit_orders(runs, section);
+  section.blocks.emplace_back(table_of_objects("Capillary results", "run", rows));
+  section.blocks.emplace_back(headline_table(runs, labels));
+  section.summary = {{"runs", run_summaries}, {"transit_time_order", orders}};
+  return section;
+}
+
+}  // namespace rbcsim::report

@@ -1,0 +1,91 @@
+#include "report/run_directory.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "common/errors.hpp"
+#include "membrane/parameters.hpp"
+
+namespace rbcsim::report {
+namespace {
+
+constexpr std::string_view kConfigFile = "config.json";
+constexpr std::string_view kResultFile = "result.json";
+
+// "a", "a and b", "a, b and c".
+std::string join_words(const std::vector<std::string>& words) {
+  std::string joined;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (i > 0) joined += i + 1 == words.size() ? " and " : ", ";
+    joined += words[i];
+  }
+  return joined;
+}
+
+std::string count_in_words(std::size_t count) {
+  constexpr std::array<std::string_view, 13> kWords{"no",   "one",    "two",   "three", "four",
+                                                    "five", "six",    "seven", "eight", "nine",
+                                                    "ten",  "eleven", "twelve"};
+  return count < kWords.size() ? std::string(kWords[count]) : std::to_string(count);
+}
+
+std::vector<std::string> string_list(const JsonField& field) {
+  std::vector<std::string> items;
+  for (std::size_t i = 0; i < field.array_size(); ++i) items.push_back(field.at(i).string());
+  return items;
+}
+
+}  // namespace
+
+std::string describe_terms(const std::vector<std::string>& enabled) {
+  const auto all = membrane::all_force_term_names();
+  const auto is_known = [&all](const std::string& name) {
+    return std::find(all.begin(), all.end(), name) != all.end();
+  };
+  if (!std::all_of(enabled.begin(), enabled.end(), is_known)) return join_words(enabled);
+  std::vector<std::string> missing;
+  for (const auto& name : all) {
+    if (std::find(enabled.begin(), enabled.end(), name) == enabled.end()) missing.push_back(name);
+  }
+  if (missing.empty()) return "all " + count_in_words(all.size());
+  if (missing.size() == all.size()) return "none";
+  return "without " + join_words(missing);
+}
+
+JsonField RunDirectory::config_field() const {
+  return JsonField(config, (directory / kConfigFile).string());
+}
+
+JsonField RunDirectory::result_field() const {
+  return JsonField(result, (directory / kResultFile).string());
+}
+
+RunDirectory read_run_directory(const std::filesystem::path& directory) {
+  if (!std::filesystem::exists(directory))
+    throw InputError(directory.string(), "no such directory");
+  if (!std::filesystem::is_directory(directory)) {
+    throw InputError(directory.string(), "not a directory (expected a run directory)");
+  }
+  RunDirectory run;
+  run.directory = directory;
+  run.config = read_json_file(directory / kConfigFile);
+  run.result = read_json_file(directory / kResultFile);
+
+  const auto result = run.result_field();
+  run.command = result.at("command").string();
+  run.morphology = result.at("morphology").string();
+  run.status = result.at("status").string();
+  if (run.status != "ok" && run.status != "failed") {
+    result.at("status").fail("expected \"ok\" or \"failed\", found \"" + run.status + "\"");
+  }
+  result.at("version").string();
+  result.at("wall_time_s").number();
+  result.at("threads").integer();
+  result.at("headline").object();
+
+  run.forces = string_list(run.config_field().at("membrane").at("forces"));
+  run.terms = describe_terms(run.forces);
+  return run;
+}
+
+}  // namespace rbcsim::report

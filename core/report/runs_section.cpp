@@ -1,0 +1,67 @@
+// Every run: what ran, how (membrane terms, threads, version), for how long, and its full
+// configuration folded under a <details>.
+#include "report/markup.hpp"
+#include "report/sections.hpp"
+
+namespace rbcsim::report {
+namespace {
+
+// Every leaf of the configuration as "path.to.key": value, in the document's order.
+void flatten(const nlohmann::json& node, const std::string& path, Table& table) {
+  if (node.is_object() && !node.empty()) {
+    for (const auto& [key, value] : node.items()) {
+      flatten(value, path.empty() ? key : path + "." + key, table);
+    }
+    return;
+  }
+  // Ten significant digits: enough to reproduce the configuration, without the last-bit noise
+  // of derived values (1.3200000000000003).
+  constexpr int kConfigurationDigits = 10;
+  table.rows.push_back({path, node.is_number_float()
+                                  ? format_significant(node.get<double>(), kConfigurationDigits)
+                                  : format_cell(node)});
+}
+
+std::vector<std::string> run_row(const RunDirectory& run) {
+  const auto& result = run.result;
+  return {run.directory.generic_string(),
+          run.command,
+          run.morphology,
+          run.terms,
+          run.status,
+          format_cell(result.at("wall_time_s")),
+          result.at("version").get<std::string>(),
+          format_cell(result.at("threads"))};
+}
+
+}  // namespace
+
+Section build_runs_section(const RunList& runs) {
+  Section section{"runs", "Runs", {}, nlohmann::json::array()};
+  section.blocks.emplace_back(Paragraph{
+      std::to_string(runs.size()) + " run directories. Membrane terms are those enabled in " +
+      "config.json (membrane.forces); wall time, version and threads come from result.json; "
+      "the full configuration of each run (with its start time and mesh) is folded below."});
+  Table table{"Runs",
+              {"run directory", "command", "morphology", "membrane terms", "status",
+               "wall time (s)", "version", "threads"},
+              {}};
+  for (const auto* run : runs) table.rows.push_back(run_row(*run));
+  section.blocks.emplace_back(std::move(table));
+
+  for (const auto* run : runs) {
+    Table configuration{"", {"option", "value"}, {}};
+    flatten(run->config, "", configuration);
+    section.blocks.emplace_back(
+        Details{"Configuration of " + run->directory.generic_string(), std::move(configuration)});
+
+    auto entry = run_identity(*run);
+    for (const auto* key : {"command", "status", "version", "wall_time_s", "threads", "headline"}) {
+      entry[key] = run->result.at(key);
+    }
+    section.summary.push_back(std::move(entry));
+  }
+  return section;
+}
+
+}  // namespace rbcsim::report

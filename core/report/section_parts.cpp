@@ -1,0 +1,94 @@
+#include <algorithm>
+#include <map>
+
+#include "report/sections.hpp"
+
+namespace rbcsim::report {
+
+std::span<const ExperimentSection> experiment_sections() {
+  static constexpr ExperimentSection kSections[] = {
+      {"calibrate", build_calibrate_section},
+      {"stretch", build_stretch_section},
+      {"shear", build_shear_section},
+      {"capillary", build_capillary_section},
+  };
+  return kSections;
+}
+
+std::vector<std::string> distinct_labels(
+    const RunList& runs, const std::function<std::string(const RunDirectory&)>& describe) {
+  std::vector<std::string> labels;
+  std::map<std::string, int> uses;
+  for (const auto* run : runs) ++uses[labels.emplace_back(describe(*run))];
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (uses[labels[i]] > 1) labels[i] += " (" + runs[i]->directory.generic_string() + ")";
+  }
+  return labels;
+}
+
+std::vector<std::string> distinct(const RunList& runs, std::string RunDirectory::*member) {
+  std::vector<std::string> values;
+  for (const auto* run : runs) {
+    if (std::find(values.begin(), values.end(), run->*member) == values.end()) {
+      values.push_back(run->*member);
+    }
+  }
+  return values;
+}
+
+std::string morphology_and_terms(const RunDirectory& run) {
+  return run.morphology + ", " + run.terms;
+}
+
+nlohmann::json run_identity(const RunDirectory& run) {
+  return {{"directory", run.directory.generic_string()},
+          {"morphology", run.morphology},
+          {"terms", run.terms},
+          {"forces", run.forces}};
+}
+
+nlohmann::json run_summary(const RunDirectory& run) {
+  auto summary = run_identity(run);
+  summary[run.command] = run.section().json();
+  return summary;
+}
+
+RunList succeeded_runs(const RunList& runs, Section& section) {
+  RunList succeeded;
+  std::string failed;
+  for (const auto* run : runs) {
+    if (run->succeeded()) {
+      succeeded.push_back(run);
+    } else {
+      failed += (failed.empty() ? "" : ", ") + run->directory.generic_string();
+    }
+  }
+  if (!failed.empty()) {
+    section.blocks.emplace_back(
+        Paragraph{"Failed runs (listed under Runs, not plotted): " + failed + "."});
+  }
+  return succeeded;
+}
+
+Table headline_table(const RunList& runs, const std::vector<std::string>& labels) {
+  std::vector<LabelledObject> rows;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    rows.push_back({labels[i], runs[i]->result.at("headline")});
+  }
+  return table_of_objects("Headline numbers", "run", rows);
+}
+
+Section build_other_section(const std::string& command, std::size_t index, const RunList& runs) {
+  Section section{"other-" + std::to_string(index), "Other runs: " + command, {}, {}};
+  const auto labels = distinct_labels(runs, morphology_and_terms);
+  section.blocks.emplace_back(headline_table(runs, labels));
+  section.summary = {{"command", command}, {"runs", nlohmann::json::array()}};
+  for (const auto* run : runs) {
+    auto entry = run_identity(*run);
+    entry["headline"] = run->result.at("headline");
+    section.summary["runs"].push_back(std::move(entry));
+  }
+  return section;
+}
+
+}  // namespace rbcsim::report

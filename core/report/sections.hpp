@@ -1,0 +1,62 @@
+// The sections of the report: one listing every run, one per experiment command (built from its
+// runs, registered by command name in one table: adding an experiment is adding a row), and a
+// plain headline section for any other command found in a run directory.
+#pragma once
+
+#include <functional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "report/document.hpp"
+#include "report/run_directory.hpp"
+
+namespace rbcsim::report {
+
+using RunList = std::vector<const RunDirectory*>;
+
+struct ExperimentSection {
+  std::string_view command;
+  Section (*build)(const RunList& runs);  // runs of this command, in report order
+};
+
+// calibrate, stretch, shear, capillary: the order of the report.
+std::span<const ExperimentSection> experiment_sections();
+
+Section build_runs_section(const RunList& runs);
+Section build_calibrate_section(const RunList& runs);
+Section build_stretch_section(const RunList& runs);
+Section build_shear_section(const RunList& runs);
+Section build_capillary_section(const RunList& runs);
+// Runs of a command without a section of its own: their headline numbers.
+Section build_other_section(const std::string& command, std::size_t index, const RunList& runs);
+
+// ---- Parts the section builders share.
+
+// describe(run) for every run, with the run directory appended to the labels that would
+// otherwise be shared by two runs, so every series and row of a section is told apart.
+std::vector<std::string> distinct_labels(
+    const RunList& runs, const std::function<std::string(const RunDirectory&)>& describe);
+
+// The distinct values of a member (morphology, terms, ...) over the runs, in order of appearance.
+std::vector<std::string> distinct(const RunList& runs, std::string RunDirectory::*member);
+
+// "discocyte, all six".
+std::string morphology_and_terms(const RunDirectory& run);
+
+// {"directory", "morphology", "terms", "forces"}: how summary.json names a run.
+nlohmann::json run_identity(const RunDirectory& run);
+
+// run_identity plus the command's own object of result.json ("stretch": {...}): a run's entry
+// in its section of summary.json.
+nlohmann::json run_summary(const RunDirectory& run);
+
+// The runs whose status is "ok". A failed run is listed in the runs section and, here, named in
+// a paragraph of `section`: its numbers are not results, so they are not plotted.
+RunList succeeded_runs(const RunList& runs, Section& section);
+
+// Each run's result.json "headline" object as a table row.
+Table headline_table(const RunList& runs, const std::vector<std::string>& labels);
+
+}  // namespace rbcsim::report

@@ -1,0 +1,81 @@
+// Optical-tweezers stretching (DESIGN.md §4 stretch): axial and transverse diameters against
+// force for every run, over the Mills et al. (2004) measurements with their error bars.
+#include "report/reference_data.hpp"
+#include "report/sections.hpp"
+#include "report/svg_plot.hpp"
+
+namespace rbcsim::report {
+namespace {
+
+struct Diameters {
+  std::vector<svg::PlotPoint> axial;
+  std::vector<svg::PlotPoint> transverse;
+};
+
+Diameters run_diameters(const RunDirectory& run) {
+  const auto points = run.section().at("points");
+  Diameters diameters;
+  for (std::size_t i = 0; i < points.array_size(); ++i) {
+    const auto point = points.at(i);
+    const double force_pN = point.at("force_pN").number();
+    diameters.axial.push_back({force_pN, point.at("axial_um").number()});
+    diameters.transverse.push_back({force_pN, point.at("transverse_um").number()});
+  }
+  return diameters;
+}
+
+std::vector<svg::Series> mills_series() {
+  const auto& mills = mills2004_stretch();
+  Diameters diameters;
+  for (std::size_t i = 0; i < mills.force_pN.size(); ++i) {
+    diameters.axial.push_back({mills.force_pN[i], mills.axial_um[i], mills.axial_error_um[i]});
+    diameters.transverse.push_back(
+        {mills.force_pN[i], mills.transverse_um[i], mills.transverse_error_um[i]});
+  }
+  const std::string colour(svg::kReferenceColour);
+  return {
+      {"Mills et al. 2004, axial", diameters.axial, colour, svg::Marker::circle, false},
+      {"Mills et al. 2004, transverse", diameters.transverse, colour, svg::Marker::square, false}};
+}
+
+std::string run_description(const RunDirectory& run) {
+  return morphology_and_terms(run) + ", " + run.section().at("mode").string();
+}
+
+}  // namespace
+
+Section build_stretch_section(const RunList& all_runs) {
+  Section section{"stretch", "Stretching (optical tweezers)", {}, nlohmann::json::array()};
+  const auto runs = succeeded_runs(all_runs, section);
+  const auto labels = distinct_labels(runs, run_description);
+
+  svg::LinePlot plot{"Cell diameters vs stretching force", "force (pN)", "diameter (µm)", {}};
+  std::vector<LabelledObject> comparisons;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto diameters = run_diameters(*runs[i]);
+    const auto colour = svg::palette_colour(i);
+    plot.series.push_back({labels[i] + ", axial", diameters.axial, colour, svg::Marker::circle});
+    plot.series.push_back({labels[i] + ", transverse", diameters.transverse, colour,
+                           svg::Marker::square, true, true});
+    const auto stretch = runs[i]->section();
+    if (const auto comparison = stretch.find("comparison")) {
+      comparisons.push_back({labels[i], comparison->object()});
+    }
+    section.summary.push_back(run_summary(*runs[i]));
+  }
+  // The measurements last, so they are drawn over the runs' lines.
+  for (auto& series : mills_series()) plot.series.push_back(std::move(series));
+  section.blocks.emplace_back(Figure{
+      svg::render_line_plot(plot),
+      "Axial (solid) and transverse (dashed) diameters at steady state against the total force "
+      "on each contact patch. Black: Mills et al. (2004), Fig. 8, healthy cells, with error bars "
+      "(half-lengths as digitised, share/reference/mills2004_stretch.csv)."});
+  if (!comparisons.empty()) {
+    section.blocks.emplace_back(
+        table_of_objects("Comparison with Mills et al. (2004)", "run", comparisons));
+  }
+  section.blocks.emplace_back(headline_table(runs, labels));
+  return section;
+}
+
+}  // namespace rbcsim::report

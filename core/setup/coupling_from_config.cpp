@@ -1,0 +1,47 @@
+#include "setup/coupling_from_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rbcsim::setup {
+namespace {
+
+std::size_t interval_steps(double interval_s, const units::UnitConverter& units) {
+  if (interval_s == 0.0) return 0;
+  const double steps = std::round(units.to_lattice(units::PhysicalUnit::time_s, interval_s));
+  return static_cast<std::size_t>(std::max(steps, 1.0));
+}
+
+}  // namespace
+
+lattice::FluidParameters fluid_parameters_from(const config::Config& config) {
+  lattice::FluidParameters parameters;
+  parameters.collision = config.string("lattice.collision");
+  parameters.collision_parameters.tau = config.number("lattice.relaxation_time");
+  parameters.collision_parameters.magic_parameter = config.number("lattice.trt_magic");
+  return parameters;
+}
+
+coupling::CouplingParameters coupling_parameters_from(const config::Config& config,
+                                                      const std::filesystem::path& run_directory) {
+  coupling::CouplingParameters parameters;
+  parameters.kernel = config.string("ibm.kernel");
+  parameters.point_advance = config.string("ibm.point_advance");
+  auto& stability = parameters.stability;
+  stability.max_vertex_step_lu = config.number("stability.max_vertex_step_dx");
+  stability.force_cap_vertex_fraction = config.number("stability.force_cap_vertex_fraction");
+  stability.force_cap_max_steps =
+      static_cast<std::size_t>(config.integer("stability.force_cap_max_steps"));
+  stability.fluid_check_interval_steps =
+      static_cast<std::size_t>(config.integer("stability.fluid_check_interval_steps"));
+  parameters.run_directory = run_directory;
+  return parameters;
+}
+
+coupling::SnapshotIntervals snapshot_intervals_from(const config::Config& config,
+                                                    const units::UnitConverter& units) {
+  return {interval_steps(config.number("output.membrane_interval_s"), units),
+          interval_steps(config.number("output.fluid_interval_s"), units)};
+}
+
+}  // namespace rbcsim::setup

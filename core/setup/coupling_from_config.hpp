@@ -1,0 +1,27 @@
+// lattice.*, ibm.*, stability.* and output.* options -> the fluid's and the coupled time loop's
+// parameter structs (lattice units where the engine wants them).
+#pragma once
+
+#include <filesystem>
+
+#include "config/config.hpp"
+#include "coupling/coupled_simulation.hpp"
+#include "coupling/snapshot.hpp"
+#include "lattice/fluid_solver.hpp"
+#include "units/unit_converter.hpp"
+
+namespace rbcsim::setup {
+
+// Collision model, relaxation time and TRT magic parameter.
+lattice::FluidParameters fluid_parameters_from(const config::Config& config);
+
+// IBM kernel and point advance, stability limits, and where failure dumps go.
+coupling::CouplingParameters coupling_parameters_from(const config::Config& config,
+                                                      const std::filesystem::path& run_directory);
+
+// Snapshot intervals in steps: each output.*_interval_s rounded to the nearest whole number of
+// steps (at least one); 0 stays 0 (no snapshots).
+coupling::SnapshotIntervals snapshot_intervals_from(const config::Config& config,
+                                                    const units::UnitConverter& units);
+
+}  // namespace rbcsim::setup

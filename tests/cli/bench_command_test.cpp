@@ -1,0 +1,50 @@
+// `rbcsim bench`: one run prints every figure the design asks for, as text and as JSON. It takes
+// tens of seconds (it measures), hence a Validate suite: label `validate`.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "support/run_rbcsim.hpp"
+#include "support/scratch_directory.hpp"
+
+namespace {
+
+using rbcsim::testing::run_rbcsim;
+
+TEST(ValidateBenchCommand, JsonHasBandwidthFluidAndCoupledFiguresPerThreadCount) {
+  const rbcsim::testing::ScratchDirectory scratch;
+  const auto result = run_rbcsim("bench --json --threads 2 --large-lattice 64 64 32 --output '" +
+                                     scratch.path().string() + "'",
+                                 scratch.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto report = nlohmann::json::parse(result.out);
+  EXPECT_FALSE(report["machine"]["cpu_model"].get<std::string>().empty());
+  EXPECT_EQ(report["machine"]["omp_wait_policy"], "passive");  // ctest's environment
+  ASSERT_EQ(report["runs"].size(), 2u);
+  EXPECT_EQ(report["runs"][0]["threads"], 1);
+  EXPECT_EQ(report["runs"][1]["threads"], 2);
+  for (const auto& run : report["runs"]) {
+    EXPECT_GT(run["memory_bandwidth_GB_per_s"].get<double>(), 0.0);
+    // The roofline is the bandwidth over 304 bytes per node update.
+    EXPECT_NEAR(run["roofline_mlups"].get<double>(),
+                run["memory_bandwidth_GB_per_s"].get<double>() * 1e3 / 304.0,
+                1e-9 * run["roofline_mlups"].get<double>());
+    ASSERT_EQ(run["fluid"].size(), 2u);
+    EXPECT_EQ(run["fluid"][0]["lattice"], (nlohmann::json{40, 40, 20}));
+    EXPECT_EQ(run["fluid"][1]["lattice"], (nlohmann::json{64, 64, 32}));
+    for (const auto& fluid : run["fluid"]) {
+      EXPECT_GT(fluid["optimised_mlups"].get<double>(), 0.0);
+      EXPECT_GT(fluid["reference_mlups"].get<double>(), 0.0);
+    }
+    ASSERT_EQ(run["coupled"].size(), 2u);
+    EXPECT_EQ(run["coupled"][0]["vertices"], 642);
+    EXPECT_EQ(run["coupled"][1]["vertices"], 2562);
+    EXPECT_GT(run["coupled"][0]["ms_per_step"].get<double>(), 0.0);
+    EXPECT_FALSE(run["coupled"][0]["speedup_vs_hemocell"].is_null());
+    EXPECT_TRUE(run["coupled"][1]["speedup_vs_hemocell"].is_null());  // no HemoCell figure
+  }
+  EXPECT_EQ(nlohmann::json::parse(rbcsim::testing::read_text(scratch.path() / "bench.json")),
+            report);
+}
+
+}  // namespace

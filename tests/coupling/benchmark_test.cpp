@@ -1,0 +1,72 @@
+// The measurements behind `rbcsim bench` run, give sane numbers and leave the OpenMP set-up as
+// they found it. Speed itself is reported by `rbcsim bench`, never asserted here.
+#include "coupling/benchmark.hpp"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "common/errors.hpp"
+#include "coupling_fixtures.hpp"
+
+namespace rbcsim::coupling {
+namespace {
+
+TEST(Benchmark, LatticeBeyondCacheHoldsTwiceTheCacheInFluidArrays) {
+  EXPECT_EQ(lattice_beyond_cache(0), (std::array<int, 3>{256, 128, 128}));
+  const std::size_t cache = std::size_t{480} << 20;
+  const auto extent = lattice_beyond_cache(cache);
+  EXPECT_EQ(extent[1], 128);
+  EXPECT_EQ(extent[2], 128);
+  EXPECT_EQ(extent[0] % 8, 0);
+  // 19 populations, density, 3 velocity and 3 force components: 26 doubles per node.
+  const auto bytes = [](int nx) { return std::size_t(nx) * 128 * 128 * 26 * sizeof(double); };
+  EXPECT_GE(bytes(extent[0]), 2 * cache);
+  EXPECT_LT(bytes(extent[0] - 8), 2 * cache);     // the smallest such multiple of 8
+  EXPECT_EQ(lattice_beyond_cache(1024)[0], 128);  // never below 128 along x
+}
+
+TEST(Benchmark, TriadBandwidthIsPositiveAndRestoresTheThreadCount) {
+  const int threads_before = omp_get_max_threads();
+  const double bandwidth = measure_triad_bandwidth_GB_per_s(std::size_t{1} << 18, 1);
+  EXPECT_TRUE(std::isfinite(bandwidth));
+  EXPECT_GT(bandwidth, 0.0);
+  EXPECT_EQ(omp_get_max_threads(), threads_before);
+  EXPECT_THROW(measure_triad_bandwidth_GB_per_s(100, 0), std::invalid_argument);
+  EXPECT_THROW(measure_triad_bandwidth_GB_per_s(0, 1), std::invalid_argument);
+}
+
+TEST(Benchmark, MachineDescriptionReadsTheEnvironment) {
+  const auto machine = describe_machine();
+  EXPECT_FALSE(machine.cpu_model.empty());
+  EXPECT_GE(machine.logical_cpus, 1);
+  EXPECT_GE(machine.openmp_max_threads, 1);
+  const char* policy = std::getenv("OMP_WAIT_POLICY");
+  EXPECT_EQ(machine.omp_wait_policy, policy != nullptr ? policy : "unset");
+}
+
+TEST(Benchmark, CoupledStepTimingCoversEveryPhase) {
+  const int threads_before = omp_get_max_threads();
+  const auto sphere = testing::sphere_mesh(1, 1.0, Vec3::Zero());
+  const auto timing = measure_coupled_step(sphere, membrane::MembraneParameters{},
+                                           testing::plasma_units(), {10, 10, 10}, "phi2", 1);
+  EXPECT_EQ(timing.vertex_count, 42u);
+  EXPECT_GT(timing.ms_per_step, 0.0);
+  // The phases of the fastest batch add up to it (the step's bookkeeping outside them aside).
+  const auto& phases = timing.fastest_batch_phases;
+  ASSERT_GT(phases.steps, 0u);
+  EXPECT_GT(phases.fluid_s, 0.0);
+  EXPECT_GT(phases.membrane_s, 0.0);
+  EXPECT_NEAR(1e3 * phases.total_s() / static_cast<double>(phases.steps), timing.ms_per_step,
+              0.1 * timing.ms_per_step);
+  EXPECT_EQ(omp_get_max_threads(), threads_before);
+  EXPECT_THROW(measure_coupled_step(sphere, membrane::MembraneParameters{}, testing::plasma_units(),
+                                    {10, 10, 10}, "phi9", 1),
+               InputError);
+}
+
+}  // namespace
+}  // namespace rbcsim::coupling

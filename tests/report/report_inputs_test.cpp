@@ -1,0 +1,197 @@
+// What the report does with awkward input: hostile strings, failed runs, other commands, and
+// run directories that break the contract (each must name the file and the problem).
+#include <gtest/gtest.h>
+
+#include "common/errors.hpp"
+#include "report/report.hpp"
+#include "report/run_fixtures.hpp"
+#include "report/xml_document.hpp"
+#include "support/run_rbcsim.hpp"
+#include "support/scratch_directory.hpp"
+
+namespace {
+
+using rbcsim::report::build_report;
+using rbcsim::report::read_run_directories;
+using rbcsim::testing::FixtureRun;
+using rbcsim::testing::parse_xml;
+using rbcsim::testing::write_file;
+using rbcsim::testing::write_run;
+
+// The message of the InputError that building the report of `directories` throws.
+std::string report_error(const std::vector<std::filesystem::path>& directories) {
+  try {
+    build_report(read_run_directories(directories));
+  } catch (const rbcsim::InputError& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+TEST(ReportInputs, HostileStringsAreEscapedEverywhere) {
+  rbcsim::testing::ScratchDirectory scratch;
+  const std::string morphology = "<script>alert(\"x\")</script> & 'q' ]]> \x01 |*_";
+  const std::vector<std::string> forces{"link", "<b>bold</b>"};
+  auto stretch = rbcsim::testing::stretch_run(forces, 90, 0.3);
+  stretch.morphology = morphology;
+  auto capillary = rbcsim::testing::capillary_run(morphology, 1e-3, 1.4);
+  capillary.forces = forces;
+  const auto documents =
+      build_report(read_run_directories({write_run(scratch.path() / "stretch", stretch),
+                                         write_run(scratch.path() / "capillary", capillary)}));
+
+  const auto page = parse_xml(documents.html);
+  ASSERT_EQ(page.error, "");
+  EXPECT_EQ(page.find("script").size(), 0u);
+  EXPECT_EQ(page.find("b").size(), 0u);
+  // The parser reads back the text as written, the control character (which XML cannot carry)
+  // replaced by U+FFFD.
+  const std::string shown = "<script>alert(\"x\")</script> & 'q' ]]> \xEF\xBF\xBD |*_";
+  const std::string terms = "link and <b>bold</b>";
+  std::vector<std::string> series;
+  for (const auto i : page.find("g", "series"))
+    series.push_back(page.elements[i].attribute("data-label"));
+  EXPECT_NE(std::find(series.begin(), series.end(), shown + ", " + terms + ", quasi-static, axial"),
+            series.end());
+  EXPECT_NE(std::find(series.begin(), series.end(), shown + ", " + terms), series.end());
+
+  // Markdown: one line per row, no raw tag, no unescaped cell separator.
+  EXPECT_EQ(documents.markdown.find("<script>"), std::string::npos);
+  EXPECT_EQ(documents.markdown.find("\x01"), std::string::npos);
+  EXPECT_NE(documents.markdown.find("\\</script\\> & 'q' \\]\\]\\>   \\|\\*\\_"), std::string::npos)
+      << documents.markdown;
+  // summary.json keeps the strings exactly.
+  EXPECT_EQ(documents.summary.at("stretch")[0].at("morphology"), morphology);
+  EXPECT_EQ(documents.summary.at("stretch")[0].at("terms"), terms);
+}
+
+TEST(ReportInputs, FailedRunsAreListedButNotPlotted) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto failed = rbcsim::testing::shear_run("discocyte", rbcsim::testing::all_terms(), 11);
+  failed.status = "failed";
+  const auto ok = rbcsim::testing::shear_run("echinocyte-III", rbcsim::testing::all_terms(), 10);
+  const auto documents = build_report(read_run_directories(
+      {write_run(scratch.path() / "failed", failed), write_run(scratch.path() / "ok", ok)}));
+  EXPECT_EQ(documents.summary.at("runs").size(), 2u);
+  ASSERT_EQ(documents.summary.at("shear").size(), 1u);
+  EXPECT_EQ(documents.summary.at("shear")[0].at("morphology"), "echinocyte-III");
+  EXPECT_NE(documents.html.find("Failed runs (listed under Runs, not plotted): " +
+                                (scratch.path() / "failed").generic_string()),
+            std::string::npos);
+  EXPECT_EQ(documents.html.find("Cell length vs shear rate: discocyte"), std::string::npos);
+}
+
+TEST(ReportInputs, OtherCommandsGetTheirHeadlineNumbers) {
+  rbcsim::testing::ScratchDirectory scratch;
+  FixtureRun bench{.command = "bench"};
+  bench.headline = {{"fluid_mlups", 61.5}};
+  const auto documents =
+      build_report(read_run_directories({write_run(scratch.path() / "bench", bench)}));
+  EXPECT_EQ(documents.summary.at("other-1").at("command"), "bench");
+  EXPECT_EQ(documents.summary.at("other-1").at("runs")[0].at("headline").at("fluid_mlups"), 61.5);
+  EXPECT_NE(documents.markdown.find("## Other runs: bench"), std::string::npos);
+  EXPECT_EQ(parse_xml(documents.html).error, "");
+}
+
+TEST(ReportInputs, RunsThatWouldShareALabelAreToldApartByDirectory) {
+  rbcsim::testing::ScratchDirectory scratch;
+  const auto run = rbcsim::testing::stretch_run(rbcsim::testing::all_terms(), 90, 0.3);
+  const auto first = write_run(scratch.path() / "first", run);
+  const auto second = write_run(scratch.path() / "second", run);
+  const auto page = parse_xml(build_report(read_run_directories({first, second})).html);
+  std::vector<std::string> series;
+  for (const auto i : page.find("g", "series"))
+    series.push_back(page.elements[i].attribute("data-label"));
+  ASSERT_EQ(series.size(), 6u);
+  EXPECT_EQ(series[0], "discocyte, all six, quasi-static (" + first.generic_string() + "), axial");
+  EXPECT_EQ(series[2], "discocyte, all six, quasi-static (" + second.generic_string() + "), axial");
+}
+
+TEST(ReportInputs, TransitOrderDifferentFromThePaperIsSaid) {
+  rbcsim::testing::ScratchDirectory scratch;
+  const auto documents = build_report(read_run_directories(
+      {write_run(scratch.path() / "d", rbcsim::testing::capillary_run("discocyte", 2e-3, 1.4)),
+       write_run(scratch.path() / "s",
+                 rbcsim::testing::capillary_run("stomatocyte-II", 1e-3, 1.3))}));
+  const auto& order = documents.summary.at("capillary").at("transit_time_order")[0];
+  EXPECT_EQ(order.at("order"), (std::vector<std::string>{"stomatocyte-II", "discocyte"}));
+  EXPECT_EQ(order.at("paper_order"), (std::vector<std::string>{"discocyte", "stomatocyte-II"}));
+  EXPECT_FALSE(order.at("agrees_with_paper"));
+  EXPECT_NE(documents.markdown.find("different order."), std::string::npos);
+}
+
+TEST(ReportInputs, MissingDirectoryIsNamed) {
+  rbcsim::testing::ScratchDirectory scratch;
+  const auto missing = scratch.path() / "nowhere";
+  EXPECT_EQ(report_error({missing}), missing.string() + ": no such directory");
+  const auto file = scratch.path() / "plain.txt";
+  write_file(file, "not a run");
+  EXPECT_EQ(report_error({file}), file.string() + ": not a directory (expected a run directory)");
+}
+
+TEST(ReportInputs, MissingOrBrokenFilesAreNamed) {
+  rbcsim::testing::ScratchDirectory scratch;
+  const auto run = write_run(scratch.path() / "run", rbcsim::testing::calibrate_run());
+  std::filesystem::remove(run / "result.json");
+  EXPECT_EQ(report_error({run}), (run / "result.json").string() + ": no such file");
+  write_file(run / "result.json", "{\"command\": ");
+  EXPECT_EQ(report_error({run}).rfind((run / "result.json").string() + ": line 1, column", 0), 0u)
+      << report_error({run});
+  std::filesystem::remove(run / "config.json");
+  EXPECT_EQ(report_error({run}), (run / "config.json").string() + ": no such file");
+}
+
+TEST(ReportInputs, ContractViolationsNameTheJsonPath) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto stretch = rbcsim::testing::stretch_run(rbcsim::testing::all_terms(), 90, 0.3);
+  stretch.section["points"][3].erase("axial_um");
+  const auto run = write_run(scratch.path() / "stretch", stretch);
+  EXPECT_EQ(report_error({run}),
+            (run / "result.json").string() + ": /stretch/points/3: missing member \"axial_um\"");
+
+  auto shear = rbcsim::testing::shear_run("discocyte", rbcsim::testing::all_terms(), 11);
+  shear.section["rates"][1]["length_um"] = "long";
+  const auto shear_run = write_run(scratch.path() / "shear", shear);
+  EXPECT_EQ(report_error({shear_run}), (shear_run / "result.json").string() +
+                                           ": /shear/rates/1/length_um: expected a number, found "
+                                           "a string");
+
+  auto bad_status = rbcsim::testing::calibrate_run();
+  bad_status.status = "done";
+  const auto status_run = write_run(scratch.path() / "status", bad_status);
+  const auto threads_run = write_run(scratch.path() / "threads", rbcsim::testing::calibrate_run());
+  auto result = nlohmann::json::parse(rbcsim::testing::read_text(threads_run / "result.json"));
+  result["threads"] = 2.5;
+  write_file(threads_run / "result.json", result.dump());
+  EXPECT_EQ(report_error({threads_run}),
+            (threads_run / "result.json").string() +
+                ": /threads: expected an integer, found a number with a fraction or an exponent");
+
+  EXPECT_EQ(report_error({status_run}),
+            (status_run / "result.json").string() +
+                ": /status: expected \"ok\" or \"failed\", found \"done\"");
+}
+
+TEST(ReportInputs, ConfigWithoutMembraneForcesIsNamed) {
+  rbcsim::testing::ScratchDirectory scratch;
+  const auto run = write_run(scratch.path() / "run", rbcsim::testing::calibrate_run());
+  write_file(run / "config.json", R"({"membrane": {"k_link_kBT": 7}})");
+  EXPECT_EQ(report_error({run}),
+            (run / "config.json").string() + ": /membrane: missing member \"forces\"");
+}
+
+TEST(ReportInputs, BadCapillaryTimeSeriesIsNamed) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto capillary = rbcsim::testing::capillary_run("discocyte", 1e-3, 1.4);
+  const auto run = write_run(scratch.path() / "capillary", capillary);
+  const auto csv = run / "capillary_timeseries.csv";
+  write_file(csv, "time_s,deformation_index\n0,1\n1e-4,abc\n");
+  EXPECT_EQ(report_error({run}),
+            csv.string() + ": line 3, column \"deformation_index\": \"abc\" is not a number");
+  write_file(csv, "time_s,DI\n0,1\n");
+  EXPECT_EQ(report_error({run}), csv.string() + ": no column \"deformation_index\"");
+  std::filesystem::remove(csv);
+  EXPECT_EQ(report_error({run}), csv.string() + ": no such file");
+}
+
+}  // namespace
