@@ -64,8 +64,8 @@ class ShapeRecorder {
     cases::write_stretch_shape(run_.path() / file, model_.triangles(), state);
     entries_.push_back({state.point.force_pN, file});
     progress_.update("stretch: " + std::to_string(entries_.size()) + "/" +
-                     std::to_string(force_count_) + " forces, F = " +
-                     format_number(state.point.force_pN) + " pN, " +
+                     std::to_string(force_count_) +
+                     " forces, F = " + format_number(state.point.force_pN) + " pN, " +
                      std::to_string(state.point.iterations) + " iterations, " +
                      format_number(std::round(run_.elapsed_s())) + " s");
   }
@@ -101,9 +101,10 @@ void print_table(const nlohmann::ordered_json& result, const cases::StretchRun& 
   const auto& section = result["stretch"];
   std::printf("stretch (%s), %s, terms:", section["mode"].get<std::string>().c_str(),
               result["morphology"].get<std::string>().c_str());
-  for (const auto& term : section["forces_terms"]) std::printf(" %s", term.get<std::string>().c_str());
-  std::printf("\n%10s %10s %15s %11s %10s\n", "force_pN", "axial_um", "transverse_um",
-              "iterations", "converged");
+  for (const auto& term : section["forces_terms"])
+    std::printf(" %s", term.get<std::string>().c_str());
+  std::printf("\n%10s %10s %15s %11s %10s\n", "force_pN", "axial_um", "transverse_um", "iterations",
+              "converged");
   for (const auto& point : run.points) {
     std::printf("%10.3f %10.4f %15.4f %11zu %10s\n", point.force_pN, point.axial_um,
                 point.transverse_um, point.iterations, point.converged ? "yes" : "NO");
@@ -149,7 +150,8 @@ void run_stretch_command(StretchOptions& options) {
   auto result = directory.result_head(run.ok());
   if (!run.ok()) result["failure"] = run.failure;
   result["headline"] = headline(run, comparison);
-  result["files"] = {{"config", "config.json"}, {"table", "stretch.csv"}, {"shapes", "stretch.pvd"}};
+  result["files"] = {
+      {"config", "config.json"}, {"table", "stretch.csv"}, {"shapes", "stretch.pvd"}};
   result["stretch"] =
       cases::stretch_result_section(settings.mode, parameters.forces, run.points, comparison);
   directory.write_json("result.json", result);
@@ -168,17 +170,20 @@ void attach_stretch(CLI::App& application) {
       "stretch",
       "Optical-tweezers stretching: axial and transverse diameters vs force, compared with Mills "
       "et al. (2004)");
-  command->add_option("--mode", options->mode,
-                      "How each force reaches its steady shape: quasi-static (membrane alone, no "
-                      "fluid; default)")
+  command
+      ->add_option("--mode", options->mode,
+                   "How each force reaches its steady shape: quasi-static (membrane alone, no "
+                   "fluid; default)")
       ->type_name("MODE");
-  command->add_option("--forces", options->forces,
-                      "Total force per contact patch in pN: mills2004 (default, the 13 forces of "
-                      "the reference) or a range list, e.g. 0:200:25, 0:200/9, 0,50,100")
+  command
+      ->add_option("--forces", options->forces,
+                   "Total force per contact patch in pN: mills2004 (default, the 13 forces of "
+                   "the reference) or a range list, e.g. 0:200:25, 0:200/9, 0,50,100")
       ->type_name("RANGE");
-  command->add_option("--contact-diameter-um", options->contact_diameter_um,
-                      "Bead contact diameter in um (default 2): the patch is the vertices within "
-                      "half of it from each end vertex")
+  command
+      ->add_option("--contact-diameter-um", options->contact_diameter_um,
+                   "Bead contact diameter in um (default 2): the patch is the vertices within "
+                   "half of it from each end vertex")
       ->type_name("D");
   add_common_options(command, options->common);
   command->callback([options] { run_stretch_command(*options); });

@@ -65,20 +65,17 @@ void RunDirectory::start(const config::Config& config, const setup::CellMesh& ce
                                          (error ? ": " + error.message() : std::string()));
   }
   auto content = config::config_with_derived_values(config);
-  content["run"] = {{"command", command_},
-                    {"version", RBCSIM_VERSION},
-                    {"mesh_source", cell.source},
-                    {"mesh_sha256", mesh_sha256(cell.mesh)},
-                    {"threads", threads_},
-                    {"started_utc", started_utc_}};
+  content["run"] = {{"command", command_},        {"version", RBCSIM_VERSION},
+                    {"mesh_source", cell.source}, {"mesh_sha256", mesh_sha256(cell.mesh)},
+                    {"threads", threads_},        {"started_utc", started_utc_}};
   io::write_text_atomically(
       path_ / "config.json",
       content.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 nlohmann::ordered_json RunDirectory::result_head(bool ok) const {
-  return {{"command", command_},     {"version", RBCSIM_VERSION},
-          {"morphology", morphology_}, {"status", ok ? "ok" : "failed"},
+  return {{"command", command_},        {"version", RBCSIM_VERSION},
+          {"morphology", morphology_},  {"status", ok ? "ok" : "failed"},
           {"wall_time_s", elapsed_s()}, {"threads", threads_}};
 }
 

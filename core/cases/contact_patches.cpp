@@ -36,8 +36,8 @@ std::vector<std::int32_t> within_contact_diameter(std::span<const Vec3> position
 std::vector<std::int32_t> extreme_vertices(std::span<const Vec3> positions_um,
                                            const ContactSettings& settings, double sign) {
   auto order = ordered_towards_end(positions_um, sign);
-  const auto count = std::min(static_cast<std::size_t>(std::max(settings.extreme_vertex_count, 0)),
-                              order.size());
+  const auto count =
+      std::min(static_cast<std::size_t>(std::max(settings.extreme_vertex_count, 0)), order.size());
   order.resize(count);
   std::sort(order.begin(), order.end());
   return order;

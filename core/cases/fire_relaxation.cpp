@@ -58,9 +58,10 @@ class FireState {
   void rescale(double stiffest_mode_pN_per_um) {
     const double previous_largest = largest_time_step_;
     largest_time_step_ = 1.0 / std::sqrt(stiffest_mode_pN_per_um);
-    time_step_ = previous_largest > 0.0 ? std::min(time_step_ * largest_time_step_ / previous_largest,
-                                                   largest_time_step_)
-                                        : kStartStepFraction * largest_time_step_;
+    time_step_ =
+        previous_largest > 0.0
+            ? std::min(time_step_ * largest_time_step_ / previous_largest, largest_time_step_)
+            : kStartStepFraction * largest_time_step_;
   }
 
   // Power P = F.v > 0: keep going, and speed up after a streak. Otherwise step back half a step
@@ -78,7 +79,8 @@ class FireState {
       positions[i] -= 0.5 * time_step_ * velocities_[i];
       velocities_[i] = Vec3::Zero();
     }
-    time_step_ = std::max(time_step_ * kTimeStepDecrease, kSmallestStepFraction * largest_time_step_);
+    time_step_ =
+        std::max(time_step_ * kTimeStepDecrease, kSmallestStepFraction * largest_time_step_);
     mixing_ = kMixingStart;
   }
 
@@ -89,7 +91,8 @@ class FireState {
     if (time_step_ <= kSmallestStepFraction * largest_time_step_) return false;
     std::copy(previous.begin(), previous.end(), positions.begin());
     std::fill(velocities_.begin(), velocities_.end(), Vec3::Zero());
-    time_step_ = std::max(time_step_ * kTimeStepDecrease, kSmallestStepFraction * largest_time_step_);
+    time_step_ =
+        std::max(time_step_ * kTimeStepDecrease, kSmallestStepFraction * largest_time_step_);
     mixing_ = kMixingStart;
     downhill_steps_ = 0;
     return true;
@@ -124,7 +127,7 @@ membrane::RelaxationResult relax_membrane_fire(const membrane::MembraneModel& mo
   check_arguments(model, positions_um, external_forces_pN, settings);
   auto workspace = model.make_workspace();
   auto forces = model.make_forces();
-  CurvatureKinks kinks(model);
+  const CurvatureKinks kinks(model);
   FireState fire(model.vertex_count());
   std::vector<Vec3> net_pN(model.vertex_count());
   std::vector<Vec3> previous_um(positions_um.begin(), positions_um.end());
@@ -149,7 +152,7 @@ membrane::RelaxationResult relax_membrane_fire(const membrane::MembraneModel& mo
       net_pN[i] = forces.total_pN[i] +
                   (external_forces_pN.empty() ? Vec3::Zero() : Vec3(external_forces_pN[i]));
     }
-    kinks.to_minimal_force(positions_um, forces, net_pN);
+    kinks.smooth(positions_um, forces, net_pN);
     result.max_force_pN = max_norm(net_pN);
     result.converged = result.max_force_pN < settings.force_tolerance_pN;
     if (result.converged || result.iterations >= settings.max_iterations) break;

@@ -30,7 +30,7 @@ const Entry& find_named(std::span<const Entry> table, std::string_view name,
     known.append(known.empty() ? "" : ", ").append(entry.name);
   }
   throw InputError(std::string(option_path), "unknown " + std::string(what) + " " +
-                                                  in_quotes(name) + " (known: " + known + ")");
+                                                 in_quotes(name) + " (known: " + known + ")");
 }
 
 }  // namespace rbcsim::cases

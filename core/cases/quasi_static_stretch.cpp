@@ -20,8 +20,8 @@ std::string not_converged(const StretchPoint& point, const membrane::RelaxationS
 }
 
 std::string capped_at_equilibrium(double force_pN, std::size_t vertices, double cap_pN) {
-  return at_force(force_pN) + "the vertex force cap of " + format_number(cap_pN) +
-         " pN holds at " + std::to_string(vertices) +
+  return at_force(force_pN) + "the vertex force cap of " + format_number(cap_pN) + " pN holds at " +
+         std::to_string(vertices) +
          " vertices of the equilibrium, which is therefore the cap's, not the membrane's; spread "
          "the force over more vertices (stretch.contact.*) or raise membrane.vertex_force_cap_pN";
 }

@@ -1,7 +1,11 @@
 // The membrane-only relaxations a quasi-static case can use, by name (one table,
-// relaxation_methods.cpp): "fire" (fire_relaxation.hpp, an accelerated minimiser, the default)
-// and "euler" (membrane/relaxation.hpp, overdamped explicit Euler: a physical trajectory, but
-// thousands of steps). Both stop at the same criterion, so they find the same equilibrium.
+// relaxation_methods.cpp):
+//   "fire"   fire_relaxation.hpp: an accelerated minimiser with the total-curvature kinks
+//            smoothed; the default.
+//   "euler"  membrane/relaxation.hpp: the membrane module's overdamped explicit Euler, for
+//            comparison on smooth energies (tested to find FIRE's equilibrium there). It takes
+//            the model's forces as they are, so with total_curvature enabled its net force keeps
+//            the kink jumps and it reports non-convergence.
 #pragma once
 
 #include <span>

@@ -51,9 +51,9 @@ struct StretchPoint {
   double axial_um = 0.0;
   double transverse_um = 0.0;
   bool converged = false;
-  std::size_t iterations = 0;       // relaxation iterations (quasi-static) at this force
-  double residual_force_pN = 0.0;   // largest net vertex force at the end
-  std::size_t force_cap_hits = 0;   // vertex force cap triggers while relaxing (a safety net)
+  std::size_t iterations = 0;      // relaxation iterations (quasi-static) at this force
+  double residual_force_pN = 0.0;  // largest net vertex force at the end
+  std::size_t force_cap_hits = 0;  // vertex force cap triggers while relaxing (a safety net)
   double wall_time_s = 0.0;
 };
 

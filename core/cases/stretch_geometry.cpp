@@ -20,10 +20,10 @@ bool x_is_a_longest_axis(const mesh::TriangleMesh& mesh) {
   mean /= static_cast<double>(mesh.vertex_count());
   Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
   for (const auto& p : mesh.positions_um) covariance += (p - mean) * (p - mean).transpose();
-  const double largest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance,
-                                                                        Eigen::EigenvaluesOnly)
-                             .eigenvalues()
-                             .maxCoeff();
+  const double largest =
+      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance, Eigen::EigenvaluesOnly)
+          .eigenvalues()
+          .maxCoeff();
   return covariance(0, 0) >= (1.0 - kLongAxisTolerance) * largest;
 }
 
@@ -65,9 +65,9 @@ mesh::TriangleMesh in_stretch_frame(mesh::TriangleMesh mesh) {
 }
 
 double axial_diameter_um(std::span<const Vec3> positions_um) {
-  const auto [low, high] = std::minmax_element(
-      positions_um.begin(), positions_um.end(),
-      [](const Vec3& a, const Vec3& b) { return a.x() < b.x(); });
+  const auto [low, high] =
+      std::minmax_element(positions_um.begin(), positions_um.end(),
+                          [](const Vec3& a, const Vec3& b) { return a.x() < b.x(); });
   return high->x() - low->x();
 }
 

@@ -25,8 +25,8 @@ void write_stretch_shape(const std::filesystem::path& path,
 }
 
 std::vector<std::string> stretch_table_columns() {
-  return {"force_pN",          "axial_um",       "transverse_um", "converged", "iterations",
-          "residual_force_pN", "force_cap_hits", "wall_time_s"};
+  return {"force_pN",   "axial_um",          "transverse_um",  "converged",
+          "iterations", "residual_force_pN", "force_cap_hits", "wall_time_s"};
 }
 
 std::vector<double> stretch_table_row(const StretchPoint& point) {

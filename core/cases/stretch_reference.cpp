@@ -20,9 +20,8 @@ std::vector<StretchPoint> converged_by_force(std::span<const StretchPoint> point
   std::vector<StretchPoint> sorted;
   std::copy_if(points.begin(), points.end(), std::back_inserter(sorted),
                [](const StretchPoint& point) { return point.converged; });
-  std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) {
-    return a.force_pN < b.force_pN;
-  });
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const auto& a, const auto& b) { return a.force_pN < b.force_pN; });
   return sorted;
 }
 

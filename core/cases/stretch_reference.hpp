@@ -37,10 +37,10 @@ struct StretchReferencePoint {
 std::vector<StretchReferencePoint> stretch_reference_from(const io::CsvTable& table);
 
 struct StretchComparison {
-  std::size_t point_count = 0;           // reference forces compared
-  std::optional<double> rms_axial_um;    // empty when point_count is 0
+  std::size_t point_count = 0;         // reference forces compared
+  std::optional<double> rms_axial_um;  // empty when point_count is 0
   std::optional<double> rms_transverse_um;
-  std::size_t inside_error_bars = 0;     // forces with both diameters inside their bars
+  std::size_t inside_error_bars = 0;  // forces with both diameters inside their bars
   std::size_t axial_inside_error_bar = 0;
   std::size_t transverse_inside_error_bar = 0;
 };

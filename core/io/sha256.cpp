@@ -20,9 +20,8 @@ constexpr std::array<std::uint32_t, 64> kRoundConstants{
     0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
 
 // §5.3.3: the first 32 bits of the fractional parts of the square roots of the first 8 primes.
-constexpr std::array<std::uint32_t, 8> kInitialState{0x6a09e667, 0xbb67ae85, 0x3c6ef372,
-                                                     0xa54ff53a, 0x510e527f, 0x9b05688c,
-                                                     0x1f83d9ab, 0x5be0cd19};
+constexpr std::array<std::uint32_t, 8> kInitialState{
+    0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
 
 std::uint32_t big_endian_word(const std::uint8_t* bytes) {
   return (std::uint32_t{bytes[0]} << 24) | (std::uint32_t{bytes[1]} << 16) |
@@ -38,10 +37,10 @@ void Sha256::compress(const std::uint8_t* block) {
   std::array<std::uint32_t, 64> schedule{};
   for (int t = 0; t < 16; ++t) schedule[t] = big_endian_word(block + 4 * t);
   for (int t = 16; t < 64; ++t) {
-    const auto s0 = std::rotr(schedule[t - 15], 7) ^ std::rotr(schedule[t - 15], 18) ^
-                    (schedule[t - 15] >> 3);
-    const auto s1 = std::rotr(schedule[t - 2], 17) ^ std::rotr(schedule[t - 2], 19) ^
-                    (schedule[t - 2] >> 10);
+    const auto s0 =
+        std::rotr(schedule[t - 15], 7) ^ std::rotr(schedule[t - 15], 18) ^ (schedule[t - 15] >> 3);
+    const auto s1 =
+        std::rotr(schedule[t - 2], 17) ^ std::rotr(schedule[t - 2], 19) ^ (schedule[t - 2] >> 10);
     schedule[t] = schedule[t - 16] + s0 + schedule[t - 7] + s1;
   }
   std::array<std::uint32_t, 8> v{};

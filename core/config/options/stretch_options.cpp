@@ -27,8 +27,7 @@ void add_contact_options(OptionTable& table) {
 
 void add_quasi_static_options(OptionTable& table) {
   table.add_choice("stretch.quasi_static.relaxation", cases::relaxation_method_names(),
-                   kDefaults.relaxation,
-                   "Membrane-only relaxation to equilibrium at each force.");
+                   kDefaults.relaxation, "Membrane-only relaxation to equilibrium at each force.");
   table
       .add_number("stretch.quasi_static.force_tolerance_pN", "pN",
                   kDefaults.relaxation_settings.force_tolerance_pN,
