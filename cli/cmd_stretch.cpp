@@ -97,17 +97,26 @@ nlohmann::ordered_json headline(const cases::StretchRun& run,
 }
 
 void print_table(const nlohmann::ordered_json& result, const cases::StretchRun& run,
-                 const cases::StretchComparison& comparison, const RunDirectory& directory) {
+                 const cases::StretchComparison& comparison, const RunDirectory& directory,
+                 bool verbose) {
   const auto& section = result["stretch"];
   std::printf("stretch (%s), %s, terms:", section["mode"].get<std::string>().c_str(),
               result["morphology"].get<std::string>().c_str());
-  for (const auto& term : section["forces_terms"])
+  for (const auto& term : section["forces_terms"]) {
     std::printf(" %s", term.get<std::string>().c_str());
-  std::printf("\n%10s %10s %15s %11s %10s\n", "force_pN", "axial_um", "transverse_um", "iterations",
+  }
+  std::printf("\n%10s %10s %15s %11s %10s", "force_pN", "axial_um", "transverse_um", "iterations",
               "converged");
+  if (verbose) std::printf(" %18s %15s %12s", "residual_force_pN", "force_cap_hits", "wall_time_s");
+  std::printf("\n");
   for (const auto& point : run.points) {
-    std::printf("%10.3f %10.4f %15.4f %11zu %10s\n", point.force_pN, point.axial_um,
+    std::printf("%10.3f %10.4f %15.4f %11zu %10s", point.force_pN, point.axial_um,
                 point.transverse_um, point.iterations, point.converged ? "yes" : "NO");
+    if (verbose) {
+      std::printf(" %18.3g %15zu %12.2f", point.residual_force_pN, point.force_cap_hits,
+                  point.wall_time_s);
+    }
+    std::printf("\n");
   }
   if (comparison.point_count > 0) {
     std::printf(
@@ -117,7 +126,7 @@ void print_table(const nlohmann::ordered_json& result, const cases::StretchRun& 
         comparison.inside_error_bars, comparison.axial_inside_error_bar,
         comparison.transverse_inside_error_bar);
   }
-  std::printf("wall time %.1f s on %d threads; run directory %s\n", directory.elapsed_s(),
+  std::printf("wall time %.1f s, %d thread(s); run directory %s\n", directory.elapsed_s(),
               directory.threads(), directory.path().c_str());
 }
 
@@ -159,7 +168,7 @@ void run_stretch_command(StretchOptions& options) {
   if (options.common.json) {
     std::cout << result.dump(2) << '\n';
   } else if (!options.common.quiet) {
-    print_table(result, run, comparison, directory);
+    print_table(result, run, comparison, directory, options.common.verbose);
   }
   if (!run.ok()) throw RuntimeFailure("stretch: " + run.failure);
 }
