@@ -1,10 +1,15 @@
 // rbcsim stretch: the optical-tweezers experiment (DESIGN.md §4): axial and transverse diameters
 // of the cell against the pulling force, compared with Mills et al. (2004).
 #include <CLI/CLI.hpp>
+#include <array>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "cases/stretch_output.hpp"
 #include "command_registry.hpp"
@@ -29,8 +34,9 @@ struct StretchOptions {
 };
 
 // The command's own options are --set assignments in disguise, so config.json records them.
-config::Config resolve_stretch_config(StretchOptions& options) {
-  auto& assignments = options.common.config.assignments;
+config::Config resolve_stretch_config(const StretchOptions& options) {
+  auto common = options.common;
+  auto& assignments = common.config.assignments;
   if (options.mode) assignments.push_back("stretch.mode=" + *options.mode);
   if (options.forces) {
     setup::stretch_forces_from(*options.forces, "--forces");  // diagnose as --forces, not --set
@@ -41,7 +47,7 @@ config::Config resolve_stretch_config(StretchOptions& options) {
     assignments.push_back("stretch.contact.diameter_um=" +
                           format_number(*options.contact_diameter_um));
   }
-  return resolve_config(options.common);
+  return resolve_config(common);
 }
 
 std::string shape_file_name(std::size_t index) {
@@ -136,7 +142,7 @@ void write_table(const RunDirectory& directory, const cases::StretchRun& run) {
   io::write_csv_file(directory.path() / "stretch.csv", cases::stretch_table_columns(), rows);
 }
 
-void run_stretch_command(StretchOptions& options) {
+void run_stretch_command(const StretchOptions& options) {
   const auto config = resolve_stretch_config(options);
   const auto settings = setup::stretch_settings_from(config);
   const auto parameters = setup::membrane_parameters_from(config);

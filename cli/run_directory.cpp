@@ -4,9 +4,9 @@
 #include <unistd.h>
 
 #include <array>
-#include <cstdio>
 #include <ctime>
 #include <iostream>
+#include <span>
 
 #include "common/errors.hpp"
 #include "io/atomic_file.hpp"

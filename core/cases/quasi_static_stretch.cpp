@@ -1,6 +1,7 @@
 #include "cases/quasi_static_stretch.hpp"
 
 #include <chrono>
+#include <string>
 
 #include "cases/relaxation_methods.hpp"
 #include "cases/stretch_geometry.hpp"
