@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The README's main command: set up (install missing packages, build), then run the main job on the
 # embedded defaults and leave its results in out/ (or the directory given as the first argument).
-# Today the main job builds and inspects the three cell morphologies at the paper's resolution and
-# prints the resolved configuration; the experiments (stretch, shear, capillary, report) join it as
-# they land.
+# Today the main job builds and inspects the three cell morphologies at the paper's resolution,
+# prints the resolved configuration, and stretches the discocyte as the paper's Fig. 8 does (with
+# and without the area-difference and total-curvature terms), then reports on both stretch runs;
+# the other experiments (shear, capillary) join it as they land.
 set -euo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 output_dir="${1:-$repo_root/out}"
@@ -20,4 +21,10 @@ for morphology in discocyte stomatocyte-II echinocyte-III; do
   echo "== $morphology"
   "$rbcsim" mesh info "$output_dir/$morphology.stl"
 done
+echo "== stretch (quasi-static, the 13 forces of Mills et al. 2004)"
+"$rbcsim" stretch --output "$output_dir/stretch-discocyte"
+"$rbcsim" stretch --set membrane.forces=link,bend,area,volume \
+  --output "$output_dir/stretch-discocyte-four-terms"
+"$rbcsim" report "$output_dir/stretch-discocyte" "$output_dir/stretch-discocyte-four-terms" \
+  -o "$output_dir/report"
 echo "main: results in $output_dir" >&2

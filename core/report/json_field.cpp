@@ -1,11 +1,9 @@
 #include "report/json_field.hpp"
 
-#include <fstream>
-#include <sstream>
-
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "config/config_sources.hpp"
+#include "io/text_file.hpp"
 
 namespace rbcsim::report {
 namespace {
@@ -99,18 +97,8 @@ const nlohmann::json& JsonField::object() const {
   return *value_;
 }
 
-std::string read_text_file(const std::filesystem::path& file) {
-  if (!std::filesystem::exists(file)) throw InputError(file.string(), "no such file");
-  if (std::filesystem::is_directory(file)) throw InputError(file.string(), "is a directory");
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream) throw InputError(file.string(), "cannot open the file for reading");
-  std::ostringstream text;
-  text << stream.rdbuf();
-  return text.str();
-}
-
 nlohmann::json read_json_file(const std::filesystem::path& file) {
-  return config::parse_json(read_text_file(file), file.string());
+  return config::parse_json(io::read_text_file(file), file.string());
 }
 
 }  // namespace rbcsim::report

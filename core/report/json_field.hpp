@@ -43,9 +43,6 @@ class JsonField {
   std::string pointer_;
 };
 
-// The text of a file; InputError naming it if it is missing, a directory or unreadable.
-std::string read_text_file(const std::filesystem::path& file);
-
 // A JSON file parsed (syntax errors name the file, line and column).
 nlohmann::json read_json_file(const std::filesystem::path& file);
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "config/embedded_share.hpp"
-#include "report/csv_table.hpp"
+#include "io/csv_table.hpp"
 
 namespace rbcsim::report {
 namespace {
@@ -15,7 +15,7 @@ StretchReference read_mills2004() {
   const auto text = config::find_embedded_share_file(kMillsFile);
   // The build embeds share/reference; a binary without it is a build error, not bad input.
   if (!text) throw std::logic_error("share/" + std::string(kMillsFile) + " is not embedded");
-  const auto table = CsvTable::parse(*text, "share/" + std::string(kMillsFile));
+  const auto table = io::CsvTable::parse(*text, "share/" + std::string(kMillsFile));
   return {table.numbers("force_pN"), table.numbers("axial_um"), table.numbers("axial_err_um"),
           table.numbers("transverse_um"), table.numbers("transverse_err_um")};
 }

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "report/csv_table.hpp"
+#include "io/csv_table.hpp"
 #include "report/json_field.hpp"
 
 namespace rbcsim::report {
@@ -30,7 +30,9 @@ struct RunDirectory {
   // The command's own object of result.json ("stretch": {...} for a stretch run).
   JsonField section() const { return result_field().at(command); }
   // A CSV file of the run directory, e.g. "capillary_timeseries.csv".
-  CsvTable csv(const std::string& file_name) const { return read_csv_file(directory / file_name); }
+  io::CsvTable csv(const std::string& file_name) const {
+    return io::read_csv_file(directory / file_name);
+  }
 };
 
 // Reads config.json and result.json of `directory` and checks the members every run has

@@ -1,13 +1,15 @@
-#include "report/csv_table.hpp"
+#include "io/csv_table.hpp"
 
 #include <algorithm>
 #include <charconv>
+#include <stdexcept>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
-#include "report/json_field.hpp"
+#include "io/atomic_file.hpp"
+#include "io/text_file.hpp"
 
-namespace rbcsim::report {
+namespace rbcsim::io {
 namespace {
 
 // The fields of one line. A quoted field runs to its closing quote; "" inside it is a quote.
@@ -116,4 +118,22 @@ CsvTable read_csv_file(const std::filesystem::path& file) {
   return CsvTable::parse(read_text_file(file), file.string());
 }
 
-}  // namespace rbcsim::report
+void write_csv_file(const std::filesystem::path& path, std::span<const std::string> columns,
+                    std::span<const std::vector<double>> rows) {
+  for (const auto& row : rows) {
+    if (row.size() != columns.size()) {
+      throw std::invalid_argument("CSV row of " + std::to_string(row.size()) + " values for " +
+                                  std::to_string(columns.size()) + " columns");
+    }
+  }
+  write_file_atomically(path, [&](std::ostream& out) {
+    for (std::size_t i = 0; i < columns.size(); ++i) out << (i ? "," : "") << columns[i];
+    out << '\n';
+    for (const auto& row : rows) {
+      for (std::size_t i = 0; i < row.size(); ++i) out << (i ? "," : "") << format_number(row[i]);
+      out << '\n';
+    }
+  });
+}
+
+}  // namespace rbcsim::io

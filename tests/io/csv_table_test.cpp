@@ -1,13 +1,13 @@
-#include "report/csv_table.hpp"
+#include "io/csv_table.hpp"
 
 #include <gtest/gtest.h>
 
 #include "common/errors.hpp"
-#include "report/reference_data.hpp"
+#include "support/scratch_directory.hpp"
 
 namespace {
 
-using rbcsim::report::CsvTable;
+using rbcsim::io::CsvTable;
 
 std::string parse_error(std::string_view text, const std::string& column = "") {
   try {
@@ -53,7 +53,7 @@ TEST(CsvTable, MissingFileIsNamed) {
   EXPECT_THROW(
       {
         try {
-          rbcsim::report::read_csv_file("/nonexistent/dir/stretch.csv");
+          rbcsim::io::read_csv_file("/nonexistent/dir/stretch.csv");
         } catch (const rbcsim::InputError& error) {
           EXPECT_STREQ(error.what(), "/nonexistent/dir/stretch.csv: no such file");
           throw;
@@ -62,24 +62,20 @@ TEST(CsvTable, MissingFileIsNamed) {
       rbcsim::InputError);
 }
 
-// The embedded Mills et al. (2004) data: 13 forces from 0 to about 193 pN, the cell stretching
-// along the pull and narrowing across it, every error bar positive.
-TEST(Mills2004Reference, IsEmbeddedWithItsErrorBars) {
-  const auto& mills = rbcsim::report::mills2004_stretch();
-  ASSERT_EQ(mills.force_pN.size(), 13u);
-  EXPECT_EQ(mills.force_pN.front(), 0.0);
-  EXPECT_NEAR(mills.force_pN.back(), 193, 1);
-  for (const auto* column :
-       {&mills.axial_um, &mills.axial_error_um, &mills.transverse_um, &mills.transverse_error_um}) {
-    EXPECT_EQ(column->size(), 13u);
-  }
-  EXPECT_TRUE(std::is_sorted(mills.force_pN.begin(), mills.force_pN.end()));
-  EXPECT_GT(mills.axial_um.back(), mills.axial_um.front());
-  EXPECT_LT(mills.transverse_um.back(), mills.transverse_um.front());
-  for (std::size_t i = 0; i < 13; ++i) {
-    EXPECT_GT(mills.axial_error_um[i], 0) << i;
-    EXPECT_GT(mills.transverse_error_um[i], 0) << i;
-  }
+// What write_csv_file writes reads back exactly: the header and every number to the last bit.
+TEST(CsvTable, WrittenTablesReadBackExactly) {
+  const rbcsim::testing::ScratchDirectory scratch;
+  const std::vector<std::string> columns{"force_pN", "axial_um"};
+  const std::vector<std::vector<double>> rows{{0.0, 7.82}, {15.987, 0.1 + 0.2}, {1e-300, -2.5}};
+  rbcsim::io::write_csv_file(scratch.path() / "t.csv", columns, rows);
+  const auto table = rbcsim::io::read_csv_file(scratch.path() / "t.csv");
+  EXPECT_EQ(table.column_names(), columns);
+  EXPECT_EQ(table.numbers("force_pN"), (std::vector<double>{0.0, 15.987, 1e-300}));
+  EXPECT_EQ(table.numbers("axial_um"), (std::vector<double>{7.82, 0.1 + 0.2, -2.5}));
+  EXPECT_THROW(rbcsim::io::write_csv_file(scratch.path() / "bad.csv", columns,
+                                          std::vector<std::vector<double>>{{1.0}}),
+               std::invalid_argument);
+  EXPECT_FALSE(std::filesystem::exists(scratch.path() / "bad.csv"));
 }
 
 }  // namespace

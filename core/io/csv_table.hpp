@@ -1,15 +1,18 @@
 // CSV files of the run-directory contract (stretch.csv, shear.csv, capillary_timeseries.csv) and
 // of share/reference: a header row with the unit in each column name, then one row per record.
+// The experiment commands write them (write_csv_file), `rbcsim report` and the stretch
+// comparison read them.
 // Lines starting with '#' are provenance comments (share/reference keeps its sources there) and
 // are skipped, as are blank lines. Fields may be double-quoted ("a, b", "say ""hi""").
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
-namespace rbcsim::report {
+namespace rbcsim::io {
 
 class CsvTable {
  public:
@@ -39,4 +42,10 @@ class CsvTable {
 // read_text_file + CsvTable::parse, the file being the source of every diagnostic.
 CsvTable read_csv_file(const std::filesystem::path& file);
 
-}  // namespace rbcsim::report
+// A header row and rows of numbers in their shortest round-trip form (format_number), written
+// atomically (atomic_file.hpp), so a table reads back exactly. Each row must have one value per
+// column (std::invalid_argument otherwise).
+void write_csv_file(const std::filesystem::path& path, std::span<const std::string> columns,
+                    std::span<const std::vector<double>> rows);
+
+}  // namespace rbcsim::io

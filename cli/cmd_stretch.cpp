@@ -1,0 +1,210 @@
+// rbcsim stretch: the optical-tweezers experiment (DESIGN.md §4): axial and transverse diameters
+// of the cell against the pulling force, compared with Mills et al. (2004).
+#include <CLI/CLI.hpp>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cases/stretch_output.hpp"
+#include "command_registry.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common_options.hpp"
+#include "io/csv_table.hpp"
+#include "io/pvd_collection.hpp"
+#include "membrane/membrane_model.hpp"
+#include "run_directory.hpp"
+#include "setup/membrane_from_config.hpp"
+#include "setup/stretch_from_config.hpp"
+
+namespace rbcsim::cli {
+namespace {
+
+struct StretchOptions {
+  CommonOptions common;
+  std::optional<std::string> mode;
+  std::optional<std::string> forces;
+  std::optional<double> contact_diameter_um;
+};
+
+// The command's own options are --set assignments in disguise, so config.json records them.
+config::Config resolve_stretch_config(const StretchOptions& options) {
+  auto common = options.common;
+  auto& assignments = common.config.assignments;
+  if (options.mode) assignments.push_back("stretch.mode=" + *options.mode);
+  if (options.forces) {
+    setup::stretch_forces_from(*options.forces, "--forces");  // diagnose as --forces, not --set
+    assignments.push_back("stretch.forces_pN=" + *options.forces);
+  }
+  if (options.contact_diameter_um) {
+    assignments.push_back("stretch.contact.rule=contact-diameter");
+    assignments.push_back("stretch.contact.diameter_um=" +
+                          format_number(*options.contact_diameter_um));
+  }
+  return resolve_config(common);
+}
+
+std::string shape_file_name(std::size_t index) {
+  std::array<char, 32> name{};
+  std::snprintf(name.data(), name.size(), "shapes/stretch_%03zu.vtp", index);
+  return name.data();
+}
+
+// Writes each force's shape as it is reached, and reports progress.
+class ShapeRecorder {
+ public:
+  ShapeRecorder(const RunDirectory& run, const membrane::MembraneModel& model,
+                std::size_t force_count, const Progress& progress)
+      : run_(run), model_(model), force_count_(force_count), progress_(progress) {
+    std::filesystem::create_directories(run_.path() / "shapes");
+  }
+
+  void operator()(const cases::StretchState& state) {
+    const auto file = shape_file_name(entries_.size());
+    cases::write_stretch_shape(run_.path() / file, model_.triangles(), state);
+    entries_.push_back({state.point.force_pN, file});
+    progress_.update("stretch: " + std::to_string(entries_.size()) + "/" +
+                     std::to_string(force_count_) +
+                     " forces, F = " + format_number(state.point.force_pN) + " pN, " +
+                     std::to_string(state.point.iterations) + " iterations, " +
+                     format_number(std::round(run_.elapsed_s())) + " s");
+  }
+
+  const std::vector<io::PvdEntry>& entries() const { return entries_; }
+
+ private:
+  const RunDirectory& run_;
+  const membrane::MembraneModel& model_;
+  std::size_t force_count_;
+  const Progress& progress_;
+  std::vector<io::PvdEntry> entries_;
+};
+
+nlohmann::ordered_json headline(const cases::StretchRun& run,
+                                const cases::StretchComparison& comparison) {
+  nlohmann::ordered_json numbers = nlohmann::ordered_json::object();
+  if (!run.points.empty()) {
+    const auto& last = run.points.back();
+    numbers["max_force_pN"] = last.force_pN;
+    numbers["axial_um_at_max_force"] = last.axial_um;
+    numbers["transverse_um_at_max_force"] = last.transverse_um;
+  }
+  if (comparison.rms_axial_um) numbers["rms_axial_vs_mills_um"] = *comparison.rms_axial_um;
+  if (comparison.rms_transverse_um) {
+    numbers["rms_transverse_vs_mills_um"] = *comparison.rms_transverse_um;
+  }
+  return numbers;
+}
+
+void print_table(const nlohmann::ordered_json& result, const cases::StretchRun& run,
+                 const cases::StretchComparison& comparison, const RunDirectory& directory,
+                 bool verbose) {
+  const auto& section = result["stretch"];
+  std::printf("stretch (%s), %s, terms:", section["mode"].get<std::string>().c_str(),
+              result["morphology"].get<std::string>().c_str());
+  for (const auto& term : section["forces_terms"]) {
+    std::printf(" %s", term.get<std::string>().c_str());
+  }
+  std::printf("\n%10s %10s %15s %11s %10s", "force_pN", "axial_um", "transverse_um", "iterations",
+              "converged");
+  if (verbose) std::printf(" %18s %15s %12s", "residual_force_pN", "force_cap_hits", "wall_time_s");
+  std::printf("\n");
+  for (const auto& point : run.points) {
+    std::printf("%10.3f %10.4f %15.4f %11zu %10s", point.force_pN, point.axial_um,
+                point.transverse_um, point.iterations, point.converged ? "yes" : "NO");
+    if (verbose) {
+      std::printf(" %18.3g %15zu %12.2f", point.residual_force_pN, point.force_cap_hits,
+                  point.wall_time_s);
+    }
+    std::printf("\n");
+  }
+  if (comparison.point_count > 0) {
+    std::printf(
+        "vs Mills 2004 at %zu forces: RMS axial %.3f um, transverse %.3f um; inside the error "
+        "bars: %zu (axial %zu, transverse %zu)\n",
+        comparison.point_count, *comparison.rms_axial_um, *comparison.rms_transverse_um,
+        comparison.inside_error_bars, comparison.axial_inside_error_bar,
+        comparison.transverse_inside_error_bar);
+  }
+  std::printf("wall time %.1f s, %d thread(s); run directory %s\n", directory.elapsed_s(),
+              directory.threads(), directory.path().c_str());
+}
+
+void write_table(const RunDirectory& directory, const cases::StretchRun& run) {
+  std::vector<std::vector<double>> rows;
+  for (const auto& point : run.points) rows.push_back(cases::stretch_table_row(point));
+  io::write_csv_file(directory.path() / "stretch.csv", cases::stretch_table_columns(), rows);
+}
+
+void run_stretch_command(const StretchOptions& options) {
+  const auto config = resolve_stretch_config(options);
+  const auto settings = setup::stretch_settings_from(config);
+  const auto parameters = setup::membrane_parameters_from(config);
+  const auto cell_mesh = setup::cell_mesh_from(config);
+  for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
+  const auto cell = cases::prepare_stretch_cell(cell_mesh.mesh, settings.contact);
+  const membrane::MembraneModel model(cell.mesh, parameters);
+
+  const RunDirectory directory("stretch", options.common, config);
+  directory.start(config, cell_mesh);
+  const Progress progress(options.common);
+  ShapeRecorder recorder(directory, model, settings.forces_pN.size(), progress);
+  const auto run = cases::run_stretch(model, cell, settings, std::ref(recorder));
+  progress.done();
+
+  const auto comparison =
+      cases::compare_with_reference(run.points, setup::mills2004_stretch_reference());
+  write_table(directory, run);
+  io::write_pvd_collection(directory.path() / "stretch.pvd", recorder.entries());
+  auto result = directory.result_head(run.ok());
+  if (!run.ok()) result["failure"] = run.failure;
+  result["headline"] = headline(run, comparison);
+  result["files"] = {
+      {"config", "config.json"}, {"table", "stretch.csv"}, {"shapes", "stretch.pvd"}};
+  result["stretch"] =
+      cases::stretch_result_section(settings.mode, parameters.forces, run.points, comparison);
+  directory.write_json("result.json", result);
+
+  if (options.common.json) {
+    std::cout << result.dump(2) << '\n';
+  } else if (!options.common.quiet) {
+    print_table(result, run, comparison, directory, options.common.verbose);
+  }
+  if (!run.ok()) throw RuntimeFailure("stretch: " + run.failure);
+}
+
+void attach_stretch(CLI::App& application) {
+  auto options = std::make_shared<StretchOptions>();
+  auto* command = application.add_subcommand(
+      "stretch",
+      "Optical-tweezers stretching: axial and transverse diameters vs force, compared with Mills "
+      "et al. (2004)");
+  command
+      ->add_option("--mode", options->mode,
+                   "How each force reaches its steady shape: quasi-static (membrane alone, no "
+                   "fluid; default)")
+      ->type_name("MODE");
+  command
+      ->add_option("--forces", options->forces,
+                   "Total force per contact patch in pN: mills2004 (default, the 13 forces of "
+                   "the reference) or a range list, e.g. 0:200:25, 0:200/9, 0,50,100")
+      ->type_name("RANGE");
+  command
+      ->add_option("--contact-diameter-um", options->contact_diameter_um,
+                   "Bead contact diameter in um (default 2): the patch is the vertices within "
+                   "half of it from each end vertex")
+      ->type_name("D");
+  add_common_options(command, options->common);
+  command->callback([options] { run_stretch_command(*options); });
+}
+
+const bool registered = register_command({"stretch", 30, attach_stretch});
+
+}  // namespace
+}  // namespace rbcsim::cli

@@ -1,0 +1,98 @@
+#include "run_directory.hpp"
+
+#include <omp.h>
+#include <unistd.h>
+
+#include <array>
+#include <ctime>
+#include <iostream>
+#include <span>
+
+#include "common/errors.hpp"
+#include "io/atomic_file.hpp"
+#include "io/sha256.hpp"
+
+namespace rbcsim::cli {
+namespace {
+
+// "2024-05-01T12:34:56Z" (ISO 8601) or, for directory names, "20240501T123456Z".
+std::string utc_text(std::chrono::system_clock::time_point time, const char* format) {
+  const std::time_t seconds = std::chrono::system_clock::to_time_t(time);
+  std::tm utc{};
+  gmtime_r(&seconds, &utc);
+  std::array<char, 32> text{};
+  const auto length = std::strftime(text.data(), text.size(), format, &utc);
+  return std::string(text.data(), length);
+}
+
+int apply_threads(int requested) {
+  if (requested > 0) omp_set_num_threads(requested);
+  return omp_get_max_threads();
+}
+
+}  // namespace
+
+std::string mesh_sha256(const mesh::TriangleMesh& mesh) {
+  io::Sha256 hash;
+  hash.update(std::as_bytes(std::span(mesh.positions_um)));
+  hash.update(std::as_bytes(std::span(mesh.triangles)));
+  return hash.hex_digest();
+}
+
+RunDirectory::RunDirectory(std::string command, const CommonOptions& options,
+                           const config::Config& config)
+    : command_(std::move(command)),
+      morphology_(config.string("morphology")),
+      threads_(apply_threads(options.threads)),
+      started_(std::chrono::steady_clock::now()) {
+  const auto now = std::chrono::system_clock::now();
+  started_utc_ = utc_text(now, "%Y-%m-%dT%H:%M:%SZ");
+  path_ = !options.output_directory.empty()
+              ? options.output_directory
+              : std::filesystem::path("runs") /
+                    (command_ + "-" + morphology_ + "-" + utc_text(now, "%Y%m%dT%H%M%SZ"));
+}
+
+double RunDirectory::elapsed_s() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+}
+
+void RunDirectory::start(const config::Config& config, const setup::CellMesh& cell) const {
+  std::error_code error;
+  std::filesystem::create_directories(path_, error);
+  if (error || !std::filesystem::is_directory(path_)) {
+    throw InputError(path_.string(), "cannot create the run directory" +
+                                         (error ? ": " + error.message() : std::string()));
+  }
+  auto content = config::config_with_derived_values(config);
+  content["run"] = {{"command", command_},        {"version", RBCSIM_VERSION},
+                    {"mesh_source", cell.source}, {"mesh_sha256", mesh_sha256(cell.mesh)},
+                    {"threads", threads_},        {"started_utc", started_utc_}};
+  io::write_text_atomically(
+      path_ / "config.json",
+      content.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+}
+
+nlohmann::ordered_json RunDirectory::result_head(bool ok) const {
+  return {{"command", command_},        {"version", RBCSIM_VERSION},
+          {"morphology", morphology_},  {"status", ok ? "ok" : "failed"},
+          {"wall_time_s", elapsed_s()}, {"threads", threads_}};
+}
+
+void RunDirectory::write_json(const std::string& file_name,
+                              const nlohmann::ordered_json& content) const {
+  io::write_text_atomically(path_ / file_name, content.dump(2) + "\n");
+}
+
+Progress::Progress(const CommonOptions& options)
+    : enabled_(!options.quiet && isatty(STDERR_FILENO) == 1) {}
+
+void Progress::update(const std::string& line) const {
+  if (enabled_) std::cerr << "\r\033[K" << line << std::flush;
+}
+
+void Progress::done() const {
+  if (enabled_) std::cerr << "\r\033[K" << std::flush;
+}
+
+}  // namespace rbcsim::cli

@@ -1,0 +1,66 @@
+// The run directory every experiment command writes (calibrate, stretch, shear, capillary), and
+// that `rbcsim report` reads:
+//   config.json  the resolved config with its "derived" values, plus a "run" object: command,
+//                version, mesh_source, mesh_sha256, threads, started_utc;
+//   result.json  command, version, morphology, status ("ok" | "failed"), wall_time_s, threads,
+//                headline, files, and the command's own object (schemas/result.schema.json);
+//   CSV tables and ParaView files of the command.
+// Every file is written atomically (io/atomic_file.hpp).
+#pragma once
+
+#include <chrono>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "common_options.hpp"
+#include "config/config.hpp"
+#include "setup/cell_from_config.hpp"
+
+namespace rbcsim::cli {
+
+// SHA-256 of the mesh's vertex array (x, y, z as float64) followed by its triangle array (three
+// int32 each), as laid out in memory (little-endian): equal for equal meshes, whatever file or
+// generator they came from.
+std::string mesh_sha256(const mesh::TriangleMesh& mesh);
+
+class RunDirectory {
+ public:
+  // Applies --threads (OpenMP) and notes the start time. The directory is --output, or
+  // runs/<command>-<morphology>-<UTC timestamp> below the working directory.
+  RunDirectory(std::string command, const CommonOptions& options, const config::Config& config);
+
+  const std::filesystem::path& path() const { return path_; }
+  int threads() const { return threads_; }
+  double elapsed_s() const;
+
+  // Creates the directory (InputError if that fails) and writes config.json.
+  void start(const config::Config& config, const setup::CellMesh& cell) const;
+  // command, version, morphology, status, wall_time_s, threads: the head of result.json.
+  nlohmann::ordered_json result_head(bool ok) const;
+  // <directory>/<file_name>, pretty-printed.
+  void write_json(const std::string& file_name, const nlohmann::ordered_json& content) const;
+
+ private:
+  std::string command_;
+  std::string morphology_;
+  std::filesystem::path path_;
+  int threads_ = 1;
+  std::string started_utc_;
+  std::chrono::steady_clock::time_point started_;
+};
+
+// Progress lines on stderr, only when stderr is a terminal and --quiet is not given (DESIGN.md
+// §1: results go to files and stdout, so pipelines never see progress).
+class Progress {
+ public:
+  explicit Progress(const CommonOptions& options);
+  // Overwrites the current line; done() ends it.
+  void update(const std::string& line) const;
+  void done() const;
+
+ private:
+  bool enabled_ = false;
+};
+
+}  // namespace rbcsim::cli

@@ -1,0 +1,33 @@
+#include "cases/relaxation_methods.hpp"
+
+#include <array>
+
+#include "cases/fire_relaxation.hpp"
+#include "cases/named_table.hpp"
+
+namespace rbcsim::cases {
+namespace {
+
+struct RelaxationEntry {
+  std::string_view name;
+  RelaxationMethod relax;
+};
+
+constexpr std::array<RelaxationEntry, 2> kRelaxationMethods{{
+    {"fire", relax_membrane_fire},
+    {"euler", membrane::relax_membrane},
+}};
+
+}  // namespace
+
+std::vector<std::string> relaxation_method_names() {
+  return names_of<RelaxationEntry>(kRelaxationMethods);
+}
+
+RelaxationMethod find_relaxation_method(std::string_view name) {
+  return find_named<RelaxationEntry>(kRelaxationMethods, name, "stretch.quasi_static.relaxation",
+                                     "relaxation")
+      .relax;
+}
+
+}  // namespace rbcsim::cases

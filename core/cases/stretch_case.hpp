@@ -1,0 +1,86 @@
+// The optical-tweezers stretch (DESIGN.md §4 "stretch", paper §3.1): a total force F pulls each
+// of two contact patches at the ends of the cell's long axis in opposite directions; for each F
+// the cell is brought to its steady shape and the axial and transverse diameters are recorded.
+//
+//   auto cell = prepare_stretch_cell(mesh, settings.contact);     // frame + patches
+//   membrane::MembraneModel model(cell.mesh, parameters);         // the stress-free reference
+//   auto run = run_stretch(model, cell, settings, observer);      // every force, in order
+//
+// How the steady shape is reached is a named mode (one table, stretch_case.cpp):
+//   "quasi-static"  the membrane alone relaxed to equilibrium under the tweezer forces
+//                   (quasi_static_stretch.hpp): no fluid, seconds.
+// The fluid-coupled mode (the cell in plasma at rest, LBM + IBM, run to a steady state) becomes
+// one more row of that table once the coupled time loop exists.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "cases/contact_patches.hpp"
+#include "common/vec3.hpp"
+#include "membrane/membrane_model.hpp"
+#include "membrane/relaxation.hpp"
+#include "mesh/triangle_mesh.hpp"
+
+namespace rbcsim::cases {
+
+struct StretchSettings {
+  std::string mode = "quasi-static";
+  std::vector<double> forces_pN;  // applied in this order, each from the previous shape
+  ContactSettings contact;
+  // quasi-static: the relaxation method by name (relaxation_methods.hpp) and its stop criterion
+  // (force_tolerance_pN on the largest net vertex force, max_iterations).
+  std::string relaxation = "fire";
+  membrane::RelaxationSettings relaxation_settings{.force_tolerance_pN = 1e-4};
+};
+
+// The cell in the stretch frame (stretch_geometry.hpp) and its contact patches.
+struct StretchCell {
+  mesh::TriangleMesh mesh;
+  ContactPatches patches;
+};
+
+// Throws InputError for an unknown contact rule or patches that overlap.
+StretchCell prepare_stretch_cell(mesh::TriangleMesh mesh, const ContactSettings& contact);
+
+struct StretchPoint {
+  double force_pN = 0.0;
+  double axial_um = 0.0;
+  double transverse_um = 0.0;
+  bool converged = false;
+  std::size_t iterations = 0;      // relaxation iterations (quasi-static) at this force
+  double residual_force_pN = 0.0;  // largest net vertex force at the end
+  std::size_t force_cap_hits = 0;  // vertex force cap triggers while relaxing (a safety net)
+  double wall_time_s = 0.0;
+};
+
+// What an observer sees after each force: the point, the shape reached, the membrane forces
+// there (per term, for output; null when a force law reached its limit at this shape, so there
+// are none) and the tweezer forces.
+struct StretchState {
+  const StretchPoint& point;
+  std::span<const Vec3> positions_um;
+  const membrane::MembraneForces* membrane_forces;
+  std::span<const Vec3> external_forces_pN;
+};
+using StretchObserver = std::function<void(const StretchState&)>;
+
+struct StretchRun {
+  std::vector<StretchPoint> points;  // one per force reached, the failed one included
+  std::string failure;               // empty when every force converged; else why the run stopped
+  bool ok() const { return failure.empty(); }
+};
+
+std::vector<std::string> stretch_mode_names();
+
+// Runs settings.forces_pN in order. A force that does not converge, a force cap that holds at
+// equilibrium, or a force law reaching its limit stops the run: the point is recorded (and
+// observed, so its shape can be inspected) and StretchRun::failure says why; nothing is
+// silently accepted. Throws InputError for an unknown mode or relaxation name.
+StretchRun run_stretch(const membrane::MembraneModel& model, const StretchCell& cell,
+                       const StretchSettings& settings, const StretchObserver& observer);
+
+}  // namespace rbcsim::cases

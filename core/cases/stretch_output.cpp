@@ -1,0 +1,71 @@
+#include "cases/stretch_output.hpp"
+
+#include "io/vtk_polydata.hpp"
+
+namespace rbcsim::cases {
+namespace {
+
+nlohmann::ordered_json optional_number(const std::optional<double>& value) {
+  return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
+}
+
+}  // namespace
+
+void write_stretch_shape(const std::filesystem::path& path,
+                         std::span<const mesh::Triangle> triangles, const StretchState& state) {
+  std::vector<io::PointDataArray> arrays;
+  if (state.membrane_forces) {
+    arrays.push_back(io::vector_point_array("membrane_force_pN", state.membrane_forces->total_pN));
+    for (const auto& term : state.membrane_forces->terms) {
+      arrays.push_back(io::vector_point_array("force_" + term.name + "_pN", term.forces_pN));
+    }
+  }
+  arrays.push_back(io::vector_point_array("tweezer_force_pN", state.external_forces_pN));
+  io::write_vtk_polydata(path, state.positions_um, triangles, arrays);
+}
+
+std::vector<std::string> stretch_table_columns() {
+  return {"force_pN",   "axial_um",          "transverse_um",  "converged",
+          "iterations", "residual_force_pN", "force_cap_hits", "wall_time_s"};
+}
+
+std::vector<double> stretch_table_row(const StretchPoint& point) {
+  return {point.force_pN,
+          point.axial_um,
+          point.transverse_um,
+          point.converged ? 1.0 : 0.0,
+          static_cast<double>(point.iterations),
+          point.residual_force_pN,
+          static_cast<double>(point.force_cap_hits),
+          point.wall_time_s};
+}
+
+nlohmann::ordered_json stretch_result_section(std::string_view mode,
+                                              std::span<const std::string> force_terms,
+                                              std::span<const StretchPoint> points,
+                                              const StretchComparison& comparison) {
+  auto point_list = nlohmann::ordered_json::array();
+  for (const auto& point : points) {
+    point_list.push_back({{"force_pN", point.force_pN},
+                          {"axial_um", point.axial_um},
+                          {"transverse_um", point.transverse_um},
+                          {"converged", point.converged},
+                          {"iterations", point.iterations},
+                          {"residual_force_pN", point.residual_force_pN},
+                          {"force_cap_hits", point.force_cap_hits},
+                          {"wall_time_s", point.wall_time_s}});
+  }
+  return {{"mode", mode},
+          {"forces_terms", force_terms},
+          {"points", point_list},
+          {"comparison",
+           {{"reference", "mills2004"},
+            {"rms_axial_um", optional_number(comparison.rms_axial_um)},
+            {"rms_transverse_um", optional_number(comparison.rms_transverse_um)},
+            {"inside_error_bars", comparison.inside_error_bars},
+            {"axial_inside_error_bar", comparison.axial_inside_error_bar},
+            {"transverse_inside_error_bar", comparison.transverse_inside_error_bar},
+            {"point_count", comparison.point_count}}}};
+}
+
+}  // namespace rbcsim::cases

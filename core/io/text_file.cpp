@@ -1,0 +1,20 @@
+#include "io/text_file.hpp"
+
+#include <fstream>
+#include <sstream>
+
+#include "common/errors.hpp"
+
+namespace rbcsim::io {
+
+std::string read_text_file(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file)) throw InputError(file.string(), "no such file");
+  if (std::filesystem::is_directory(file)) throw InputError(file.string(), "is a directory");
+  std::ifstream stream(file, std::ios::binary);
+  if (!stream) throw InputError(file.string(), "cannot open the file for reading");
+  std::ostringstream text;
+  text << stream.rdbuf();
+  return text.str();
+}
+
+}  // namespace rbcsim::io

@@ -1,0 +1,60 @@
+#include "setup/stretch_from_config.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "common/errors.hpp"
+#include "config/embedded_share.hpp"
+#include "config/range.hpp"
+
+namespace rbcsim::setup {
+namespace {
+
+constexpr std::string_view kReferenceForces = "mills2004";
+constexpr std::string_view kMillsFile = "mills2004_stretch.csv";
+// "0:200" without a step: every 25 pN, the spacing of a typical tweezers sweep.
+constexpr std::size_t kDefaultRangeCount = 9;
+
+}  // namespace
+
+io::CsvTable embedded_reference_table(std::string_view file_name) {
+  const auto relative_path = "reference/" + std::string(file_name);
+  const auto text = config::find_embedded_share_file(relative_path);
+  if (!text) throw std::logic_error("share/" + relative_path + " is not embedded in the binary");
+  return io::CsvTable::parse(*text, "share/" + relative_path);
+}
+
+std::vector<cases::StretchReferencePoint> mills2004_stretch_reference() {
+  return cases::stretch_reference_from(embedded_reference_table(kMillsFile));
+}
+
+std::vector<double> stretch_forces_from(std::string_view text, std::string_view source) {
+  if (text == kReferenceForces) {
+    std::vector<double> forces;
+    for (const auto& point : mills2004_stretch_reference()) forces.push_back(point.force_pN);
+    return forces;
+  }
+  auto forces = config::parse_range(text, source, kDefaultRangeCount);
+  if (std::any_of(forces.begin(), forces.end(), [](double f) { return f < 0.0; })) {
+    throw InputError(std::string(source), "forces must be >= 0 pN (the tweezers pull)");
+  }
+  return forces;
+}
+
+cases::StretchSettings stretch_settings_from(const config::Config& config) {
+  cases::StretchSettings settings;
+  settings.mode = config.string("stretch.mode");
+  settings.forces_pN = stretch_forces_from(config.string("stretch.forces_pN"), "stretch.forces_pN");
+  settings.contact.rule = config.string("stretch.contact.rule");
+  settings.contact.diameter_um = config.number("stretch.contact.diameter_um");
+  settings.contact.extreme_vertex_count = config.integer("stretch.contact.extreme_vertex_count");
+  settings.relaxation = config.string("stretch.quasi_static.relaxation");
+  settings.relaxation_settings.force_tolerance_pN =
+      config.number("stretch.quasi_static.force_tolerance_pN");
+  settings.relaxation_settings.max_iterations =
+      static_cast<std::size_t>(config.integer("stretch.quasi_static.max_iterations"));
+  return settings;
+}
+
+}  // namespace rbcsim::setup

@@ -1,0 +1,152 @@
+// The smoothing of the total-curvature kinks: the sign-carrying edge force g_j must be exactly
+// the jump of the membrane model's own force across theta_j = 0, and the smoothed force must have
+// no jump.
+#include "cases/curvature_kinks.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include "mesh/geometry.hpp"
+#include "stretch_test_support.hpp"
+
+namespace {
+
+using rbcsim::Vec3;
+using rbcsim::cases::CurvatureKinks;
+using rbcsim::membrane::MembraneModel;
+using rbcsim::membrane::MembraneParameters;
+
+MembraneParameters total_curvature_only(const std::string& distribution) {
+  MembraneParameters parameters;
+  parameters.forces = {"total_curvature"};
+  parameters.distribution = distribution;
+  parameters.vertex_force_cap_pN = INFINITY;
+  return parameters;
+}
+
+// Moves the edge's wing0 along its triangle's normal until theta_j = target (Newton on
+// d theta / d wing0 = -n0 / h0, mesh/hinge.hpp).
+void set_angle(std::vector<Vec3>& positions, const rbcsim::mesh::Edge& edge, double target_rad) {
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    const Vec3 v0 = positions[edge.vertex0];
+    const Vec3 axis = positions[edge.vertex1] - v0;
+    const Vec3 normal = axis.cross(positions[edge.wing0] - v0);
+    const double height_um = normal.norm() / axis.norm();
+    const double angle = rbcsim::mesh::signed_dihedral_angle_rad(positions, edge);
+    positions[edge.wing0] += (angle - target_rad) * height_um * normal.normalized();
+  }
+}
+
+struct KinkSetup {
+  rbcsim::mesh::TriangleMesh mesh;
+  std::vector<Vec3> deformed_um;
+  std::size_t edge_index = 0;
+};
+
+// The N = 3 discocyte stretched affinely (so the total curvature deviates and g_j is not zero),
+// and its flattest edge.
+KinkSetup stretched_discocyte(const MembraneModel& model, const rbcsim::mesh::TriangleMesh& mesh) {
+  KinkSetup setup{mesh, mesh.positions_um, 0};
+  for (auto& p : setup.deformed_um) p = p.cwiseProduct(Vec3(1.15, 0.95, 0.9));
+  const auto& edges = model.topology().edges();
+  double flattest = INFINITY;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const double angle =
+        std::abs(rbcsim::mesh::signed_dihedral_angle_rad(setup.deformed_um, edges[e]));
+    if (angle < flattest) flattest = angle, setup.edge_index = e;
+  }
+  return setup;
+}
+
+class Distribution : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(Distribution, SignForceIsHalfTheJumpOfTheModelForceAcrossAFlatEdge) {
+  const auto mesh = rbcsim::cases::testing::shipped_discocyte(3);
+  const MembraneModel model(mesh, total_curvature_only(GetParam()));
+  const auto setup = stretched_discocyte(model, mesh);
+  const auto& edge = model.topology().edges()[setup.edge_index];
+  constexpr double kAngle_rad = 1e-7;
+  auto above = setup.deformed_um;
+  set_angle(above, edge, kAngle_rad);
+  auto below = setup.deformed_um;
+  set_angle(below, edge, -kAngle_rad);
+
+  auto workspace = model.make_workspace();
+  auto forces_above = model.make_forces();
+  auto forces_below = model.make_forces();
+  model.compute(above, workspace, forces_above);
+  model.compute(below, workspace, forces_below);
+  const CurvatureKinks kinks(model);
+  const auto flat = kinks.flat_edges(above, forces_above);
+  const auto found = std::find_if(flat.begin(), flat.end(), [&](const auto& candidate) {
+    return candidate.vertices[0] == edge.vertex0 && candidate.vertices[1] == edge.vertex1;
+  });
+  ASSERT_NE(found, flat.end());
+  const auto& kink = *found;
+  EXPECT_NEAR(kink.angle_rad, kAngle_rad, 1e-12);
+  double jump_scale = 0.0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    const auto vertex = kink.vertices[k];
+    const Vec3 half_jump = 0.5 * (forces_above.total_pN[vertex] - forces_below.total_pN[vertex]);
+    jump_scale = std::max(jump_scale, half_jump.norm());
+    // The rest of the force changes by O(theta) between the two shapes: 1e-7 relative.
+    EXPECT_NEAR((half_jump - kink.sign_force_pN[k]).norm(), 0.0,
+                1e-5 * kink.sign_force_pN[k].norm() + 1e-9)
+        << "vertex slot " << k;
+  }
+  EXPECT_GT(jump_scale, 1e-3);  // a real jump, not two zeros
+}
+
+// The smoothed force is continuous across theta_j = 0: on either side of a flat edge it differs
+// by O(theta), where the model's jumps by 2 g_j; at |theta_j| >= eps it is the model's own.
+TEST_P(Distribution, SmoothedForceIsContinuousAcrossAFlatEdge) {
+  const auto mesh = rbcsim::cases::testing::shipped_discocyte(3);
+  const MembraneModel model(mesh, total_curvature_only(GetParam()));
+  const auto setup = stretched_discocyte(model, mesh);
+  const auto& edge = model.topology().edges()[setup.edge_index];
+  const CurvatureKinks kinks(model);
+  auto workspace = model.make_workspace();
+  const auto smoothed_at = [&](double angle_rad) {
+    auto positions = setup.deformed_um;
+    set_angle(positions, edge, angle_rad);
+    auto forces = model.make_forces();
+    model.compute(positions, workspace, forces);
+    auto net = forces.total_pN;
+    kinks.smooth(positions, forces, net);
+    return std::pair(forces.total_pN, net);
+  };
+  const auto [model_above, smoothed_above] = smoothed_at(1e-7);
+  const auto [model_below, smoothed_below] = smoothed_at(-1e-7);
+  double model_jump = 0.0;
+  double smoothed_jump = 0.0;
+  for (const auto vertex : {edge.vertex0, edge.vertex1, edge.wing0, edge.wing1}) {
+    model_jump = std::max(model_jump, (model_above[vertex] - model_below[vertex]).norm());
+    smoothed_jump =
+        std::max(smoothed_jump, (smoothed_above[vertex] - smoothed_below[vertex]).norm());
+  }
+  EXPECT_GT(model_jump, 1e-3);
+  EXPECT_LT(smoothed_jump, 1e-4 * model_jump);
+  // Outside the window nothing changes.
+  const auto [model_outside, smoothed_outside] =
+      smoothed_at(2 * rbcsim::cases::kCurvatureSmoothing_rad);
+  for (const auto vertex : {edge.vertex0, edge.vertex1, edge.wing0, edge.wing1}) {
+    EXPECT_EQ(model_outside[vertex], smoothed_outside[vertex]);
+  }
+  // Without the term nothing changes either.
+  MembraneParameters smooth;
+  smooth.forces = {"link", "area", "volume"};
+  const MembraneModel without_term(mesh, smooth);
+  const CurvatureKinks inactive(without_term);
+  EXPECT_FALSE(inactive.active());
+  auto forces = without_term.make_forces();
+  std::vector<Vec3> untouched(without_term.vertex_count(), Vec3(1, 2, 3));
+  inactive.smooth(setup.deformed_um, forces, untouched);
+  for (const auto& force : untouched) EXPECT_EQ(force, Vec3(1, 2, 3));
+}
+
+INSTANTIATE_TEST_SUITE_P(Both, Distribution, ::testing::Values("gradient", "paper"));
+
+}  // namespace

@@ -1,0 +1,68 @@
+// Long physics check (label `validate`: every test name starts with Validate, see
+// tests/CMakeLists.txt; not in the default suite): the paper's resolution, the
+// 13 forces of Mills et al. (2004), with all six terms and without area_difference and
+// total_curvature (the paper's Fig. 8 comparison). Asserts what must hold whatever the
+// parameters; prints the curve and its distance from the measurements, which is a finding, not a
+// pass/fail bound (the parameters are Table 2's, not fitted here).
+#include <gtest/gtest.h>
+
+#include <omp.h>
+#include <chrono>
+#include <cstdio>
+
+#include "cases/stretch_reference.hpp"
+#include "io/csv_table.hpp"
+#include "stretch_test_support.hpp"
+
+namespace {
+
+using rbcsim::membrane::MembraneParameters;
+namespace cases = rbcsim::cases;
+
+class ValidateStretch : public ::testing::TestWithParam<std::vector<std::string>> {};
+
+TEST_P(ValidateStretch, MillsCurveAtThePapersResolution) {
+  const auto reference = cases::stretch_reference_from(rbcsim::io::read_csv_file(
+      std::string(RBCSIM_SOURCE_DIR) + "/share/reference/mills2004_stretch.csv"));
+  const auto cell = cases::prepare_stretch_cell(cases::testing::shipped_discocyte(4), {});
+  MembraneParameters parameters;
+  parameters.forces = GetParam();
+  const rbcsim::membrane::MembraneModel model(cell.mesh, parameters);
+  cases::StretchSettings settings;
+  for (const auto& measured : reference) settings.forces_pN.push_back(measured.force_pN);
+
+  const auto start = std::chrono::steady_clock::now();
+  const auto run = cases::run_stretch(model, cell, settings, {});
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_TRUE(run.ok()) << run.failure;
+  std::printf("terms:");
+  for (const auto& term : parameters.forces) std::printf(" %s", term.c_str());
+  std::printf("\n force_pN  axial_um (Mills)   transverse_um (Mills)  iterations\n");
+  for (std::size_t i = 0; i < run.points.size(); ++i) {
+    const auto& p = run.points[i];
+    std::printf("%9.3f  %7.3f (%6.3f)   %7.3f (%6.3f)        %6zu\n", p.force_pN, p.axial_um,
+                reference[i].axial.mean_um, p.transverse_um, reference[i].transverse.mean_um,
+                p.iterations);
+    if (i > 0) {
+      EXPECT_GT(p.axial_um, run.points[i - 1].axial_um);
+      EXPECT_LT(p.transverse_um, run.points[i - 1].transverse_um);
+    }
+  }
+  const auto comparison = cases::compare_with_reference(run.points, reference);
+  EXPECT_EQ(comparison.point_count, 13u);
+  std::printf(
+      "RMS vs Mills: axial %.3f um, transverse %.3f um; inside the error bars: %zu of 13 "
+      "(axial %zu, transverse %zu); wall time %.1f s on %d threads\n",
+      *comparison.rms_axial_um, *comparison.rms_transverse_um, comparison.inside_error_bars,
+      comparison.axial_inside_error_bar, comparison.transverse_inside_error_bar, wall_s,
+      omp_get_max_threads());
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    ValidateTerms, ValidateStretch,
+    ::testing::Values(std::vector<std::string>{"link", "bend", "area", "volume", "area_difference",
+                                               "total_curvature"},
+                      std::vector<std::string>{"link", "bend", "area", "volume"}));
+
+}  // namespace
