@@ -146,6 +146,7 @@ class PhaseRecorder {
   }
   // Over the second half of the run (the first is the start-up); 0 with too few samples.
   double frequency_hz() const {
+    if (times_s_.size() < 2) return 0.0;
     const double half_s = 0.5 * times_s_.back();
     const auto first = static_cast<std::size_t>(
         std::lower_bound(times_s_.begin(), times_s_.end(), half_s) - times_s_.begin());
