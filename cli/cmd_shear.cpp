@@ -1,0 +1,226 @@
+// rbcsim shear: one cell in simple shear flow, swept over shear rates (DESIGN.md §4): length,
+// breadth, deformation index, inclination, tank-treading frequency and surface smoothness of the
+// steady shape at each rate (paper Figs. 9-11).
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cases/shear_output.hpp"
+#include "command_registry.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common_options.hpp"
+#include "coupling/snapshot.hpp"
+#include "io/csv_table.hpp"
+#include "io/pvd_collection.hpp"
+#include "membrane/membrane_model.hpp"
+#include "run_directory.hpp"
+#include "setup/cell_from_config.hpp"
+#include "setup/membrane_from_config.hpp"
+#include "setup/shear_from_config.hpp"
+
+namespace rbcsim::cli {
+namespace {
+
+struct ShearOptions {
+  CommonOptions common;
+  std::optional<std::string> rates;
+  std::optional<std::string> boundary;
+  std::optional<double> max_strain;
+};
+
+// The command's own options are --set assignments in disguise, so config.json records them.
+config::Config resolve_shear_config(const ShearOptions& options) {
+  auto common = options.common;
+  auto& assignments = common.config.assignments;
+  if (options.rates) {
+    setup::shear_rates_from(*options.rates, "--rates");  // diagnose as --rates, not --set
+    assignments.push_back("shear.rates_per_s=" + *options.rates);
+  }
+  if (options.boundary) assignments.push_back("shear.boundary=" + *options.boundary);
+  if (options.max_strain) {
+    assignments.push_back("shear.max_strain=" + format_number(*options.max_strain));
+  }
+  return resolve_config(common);
+}
+
+std::string shape_file_name(std::size_t index) {
+  std::array<char, 48> name{};
+  std::snprintf(name.data(), name.size(), "shapes/shear_%03zu.vtp", index);
+  return name.data();
+}
+
+// Writes each rate's final shape as it ends (from the thread that ran it) and reports progress.
+class ShapeRecorder {
+ public:
+  ShapeRecorder(const RunDirectory& run, std::size_t rate_count, const Progress& progress)
+      : run_(run), rate_count_(rate_count), progress_(progress) {
+    std::filesystem::create_directories(run_.path() / "shapes");
+  }
+
+  void operator()(std::size_t rate_index, const cases::ShearPoint& point,
+                  const coupling::CoupledSimulation& simulation) {
+    coupling::write_cell_snapshot(run_.path() / shape_file_name(rate_index), simulation, 0);
+    const std::lock_guard lock(mutex_);
+    ++finished_;
+    progress_.update("shear: " + std::to_string(finished_) + "/" + std::to_string(rate_count_) +
+                     " rates, last " + format_number(point.plan.shear_rate_per_s) + " 1/s in " +
+                     std::to_string(point.steps) + " steps, " +
+                     format_number(std::round(run_.elapsed_s())) + " s");
+  }
+
+ private:
+  const RunDirectory& run_;
+  std::size_t rate_count_;
+  const Progress& progress_;
+  std::mutex mutex_;
+  std::size_t finished_ = 0;
+};
+
+std::vector<io::PvdEntry> shape_entries(const std::vector<cases::ShearPoint>& points) {
+  std::vector<io::PvdEntry> entries;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (points[i].failure.empty()) {
+      entries.push_back({points[i].plan.shear_rate_per_s, shape_file_name(i)});
+    }
+  }
+  return entries;
+}
+
+nlohmann::ordered_json headline(const std::vector<cases::ShearPoint>& points) {
+  nlohmann::ordered_json numbers = nlohmann::ordered_json::object();
+  const auto highest =
+      std::max_element(points.begin(), points.end(), [](const auto& a, const auto& b) {
+        return a.plan.shear_rate_per_s < b.plan.shear_rate_per_s;
+      });
+  if (highest != points.end() && std::isfinite(highest->shape.length_um)) {
+    numbers["max_shear_rate_per_s"] = highest->plan.shear_rate_per_s;
+    numbers["length_um_at_max_rate"] = highest->shape.length_um;
+    numbers["deformation_index_at_max_rate"] = highest->shape.deformation_index;
+  }
+  numbers["unsteady_rate_count"] =
+      std::count_if(points.begin(), points.end(), [](const auto& p) { return !p.steady; });
+  return numbers;
+}
+
+void print_table(const nlohmann::ordered_json& result, const std::vector<cases::ShearPoint>& points,
+                 const RunDirectory& directory, bool verbose) {
+  const auto& section = result["shear"];
+  std::printf("shear (%s), %s, terms:", section["boundary"].get<std::string>().c_str(),
+              result["morphology"].get<std::string>().c_str());
+  for (const auto& term : section["forces_terms"]) {
+    std::printf(" %s", term.get<std::string>().c_str());
+  }
+  std::printf("\n%8s %10s %8s %8s %9s %10s %6s %8s %8s %10s %7s %7s", "rate_1/s", "sim_rate", "Re",
+              "Ca", "length_um", "breadth_um", "DI", "incl_deg", "tt_hz", "smooth_rad", "strain",
+              "steady");
+  if (verbose) std::printf(" %8s %10s %s", "steps", "wall_s", "stop");
+  std::printf("\n");
+  for (const auto& point : points) {
+    const auto& plan = point.plan;
+    std::printf("%8.0f %10.4g %8.3g %8.3g %9.4f %10.4f %6.3f %8.2f %8.3g %10.4f %7.1f %7s",
+                plan.shear_rate_per_s, plan.simulated_shear_rate_per_s, plan.reynolds_number,
+                plan.capillary_number, point.shape.length_um, point.shape.breadth_um,
+                point.shape.deformation_index, point.shape.inclination_deg, point.tank_treading_hz,
+                point.smoothness_rad, point.strain,
+                !point.failure.empty() ? "FAILED" : (point.steady ? "yes" : "NO"));
+    if (verbose) {
+      std::printf(" %8zu %10.2f %s", point.steps, point.wall_time_s,
+                  point.failure.empty() ? point.stop_reason.c_str() : point.failure.c_str());
+    }
+    std::printf("\n");
+  }
+  std::printf("wall time %.1f s, %d thread(s); run directory %s\n", directory.elapsed_s(),
+              directory.threads(), directory.path().c_str());
+}
+
+void write_table(const RunDirectory& directory, const std::vector<cases::ShearPoint>& points) {
+  std::vector<std::vector<double>> rows;
+  for (const auto& point : points) rows.push_back(cases::shear_table_row(point));
+  io::write_csv_file(directory.path() / "shear.csv", cases::shear_table_columns(), rows);
+}
+
+std::string failures(const std::vector<cases::ShearPoint>& points) {
+  std::string text;
+  for (const auto& point : points) {
+    if (point.failure.empty()) continue;
+    text.append(text.empty() ? "" : "; ")
+        .append("rate " + format_number(point.plan.shear_rate_per_s) + " 1/s: " + point.failure);
+  }
+  return text;
+}
+
+void run_shear_command(const ShearOptions& options) {
+  const auto config = resolve_shear_config(options);
+  const auto settings = setup::shear_settings_from(config);
+  const auto parameters = setup::membrane_parameters_from(config);
+  const auto cell_mesh = setup::cell_mesh_from(config);
+  for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
+  const auto cell = cases::in_shear_frame(cell_mesh.mesh);
+  const membrane::MembraneModel model(cell, parameters);
+
+  const RunDirectory directory("shear", options.common, config);
+  const auto engine = setup::shear_engine_from(config, directory.path());
+  const auto plans = cases::plan_shear_rates(model, cell, engine, settings);
+  directory.start(config, cell_mesh);
+  const Progress progress(options.common);
+  ShapeRecorder recorder(directory, plans.size(), progress);
+  const auto points = cases::run_shear_sweep(model, cell, engine, settings, plans,
+                                             directory.threads(), std::ref(recorder));
+  progress.done();
+
+  write_table(directory, points);
+  io::write_pvd_collection(directory.path() / "shear.pvd", shape_entries(points));
+  const auto failure = failures(points);
+  auto result = directory.result_head(failure.empty());
+  if (!failure.empty()) result["failure"] = failure;
+  result["headline"] = headline(points);
+  result["files"] = {{"config", "config.json"}, {"table", "shear.csv"}, {"shapes", "shear.pvd"}};
+  result["shear"] = cases::shear_result_section(settings, parameters.forces, points);
+  directory.write_json("result.json", result);
+
+  if (options.common.json) {
+    std::cout << result.dump(2) << '\n';
+  } else if (!options.common.quiet) {
+    print_table(result, points, directory, options.common.verbose);
+  }
+  if (!failure.empty()) throw RuntimeFailure("shear: " + failure);
+}
+
+void attach_shear(CLI::App& application) {
+  auto options = std::make_shared<ShearOptions>();
+  auto* command = application.add_subcommand(
+      "shear",
+      "One cell in simple shear flow: length, breadth, deformation index, inclination and "
+      "tank-treading frequency vs shear rate (Bessis & Mohandas 1975)");
+  command
+      ->add_option("--rates", options->rates,
+                   "Shear rates in 1/s: a range list, e.g. 0:2000 (5 rates, the default), "
+                   "0:2000:250, 0:2000/9, 0,1000,2000; with --threads N, N rates run at once")
+      ->type_name("RANGE");
+  command
+      ->add_option("--boundary", options->boundary,
+                   "lees-edwards (default: sliding periodic images) or walls (moving walls)")
+      ->type_name("KIND");
+  command
+      ->add_option("--max-strain", options->max_strain,
+                   "Strain (rate x time) after which a rate that is not steady is reported "
+                   "steady: false (default 40)")
+      ->type_name("STRAIN");
+  add_common_options(command, options->common);
+  command->callback([options] { run_shear_command(*options); });
+}
+
+const bool registered = register_command({"shear", 40, attach_shear});
+
+}  // namespace
+}  // namespace rbcsim::cli

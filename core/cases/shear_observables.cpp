@@ -1,0 +1,110 @@
+#include "cases/shear_observables.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace rbcsim::cases {
+namespace {
+
+Vec3 mean_position(std::span<const Vec3> positions_um) {
+  Vec3 sum = Vec3::Zero();
+  for (const Vec3& p : positions_um) sum += p;
+  return sum / static_cast<double>(positions_um.size());
+}
+
+// Extent (max - min) of the projections onto `direction`.
+double extent_along(std::span<const Vec3> positions_um, const Vec3& direction) {
+  double low = direction.dot(positions_um.front());
+  double high = low;
+  for (const Vec3& p : positions_um) {
+    const double projection = direction.dot(p);
+    low = std::min(low, projection);
+    high = std::max(high, projection);
+  }
+  return high - low;
+}
+
+}  // namespace
+
+double largest_vertex_distance_um(std::span<const Vec3> positions_um) {
+  double largest_squared = 0.0;
+  for (std::size_t i = 0; i < positions_um.size(); ++i) {
+    for (std::size_t j = i + 1; j < positions_um.size(); ++j) {
+      largest_squared =
+          std::max(largest_squared, (positions_um[i] - positions_um[j]).squaredNorm());
+    }
+  }
+  return std::sqrt(largest_squared);
+}
+
+double in_plane_major_axis_rad(std::span<const Vec3> positions_um) {
+  const Vec3 centre = mean_position(positions_um);
+  double xx = 0.0, yy = 0.0, xy = 0.0;
+  for (const Vec3& p : positions_um) {
+    const Vec3 r = p - centre;
+    xx += r.x() * r.x();
+    yy += r.y() * r.y();
+    xy += r.x() * r.y();
+  }
+  // The eigenvector of [[xx, xy], [xy, yy]] with the larger eigenvalue is at half this angle.
+  const double angle = 0.5 * std::atan2(2.0 * xy, xx - yy);
+  return angle <= -0.5 * std::numbers::pi ? angle + std::numbers::pi : angle;
+}
+
+ShearShape measure_shear_shape(std::span<const Vec3> positions_um) {
+  ShearShape shape;
+  shape.length_um = largest_vertex_distance_um(positions_um);
+  const double axis = in_plane_major_axis_rad(positions_um);
+  shape.inclination_deg = axis * 180.0 / std::numbers::pi;
+  shape.breadth_um = extent_along(positions_um, Vec3(-std::sin(axis), std::cos(axis), 0.0));
+  shape.deformation_index =
+      (shape.length_um - shape.breadth_um) / (shape.length_um + shape.breadth_um);
+  return shape;
+}
+
+double dihedral_change_rms_rad(std::span<const double> dihedral_angles_rad,
+                               std::span<const double> reference_angles_rad) {
+  if (dihedral_angles_rad.size() != reference_angles_rad.size() || dihedral_angles_rad.empty()) {
+    throw std::invalid_argument("dihedral_change_rms_rad: one angle per edge in both spans");
+  }
+  double sum = 0.0;
+  for (std::size_t e = 0; e < dihedral_angles_rad.size(); ++e) {
+    const double change = dihedral_angles_rad[e] - reference_angles_rad[e];
+    sum += change * change;
+  }
+  return std::sqrt(sum / static_cast<double>(dihedral_angles_rad.size()));
+}
+
+double in_plane_angle_rad(const Vec3& point, const Vec3& centre) {
+  return std::atan2(point.y() - centre.y(), point.x() - centre.x());
+}
+
+double unwrap_angle_rad(double previous_unwrapped_rad, double angle_rad) {
+  constexpr double kTurn = 2.0 * std::numbers::pi;
+  const double turns = std::round((previous_unwrapped_rad - angle_rad) / kTurn);
+  return angle_rad + turns * kTurn;
+}
+
+double rotation_frequency_hz(std::span<const double> times_s,
+                             std::span<const double> unwrapped_angles_rad) {
+  const std::size_t n = times_s.size();
+  if (n < 2 || unwrapped_angles_rad.size() != n) {
+    throw std::invalid_argument("rotation_frequency_hz: two samples or more, one angle per time");
+  }
+  double mean_t = 0.0, mean_angle = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    mean_t += times_s[i] / static_cast<double>(n);
+    mean_angle += unwrapped_angles_rad[i] / static_cast<double>(n);
+  }
+  double covariance = 0.0, variance = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    covariance += (times_s[i] - mean_t) * (unwrapped_angles_rad[i] - mean_angle);
+    variance += (times_s[i] - mean_t) * (times_s[i] - mean_t);
+  }
+  if (!(variance > 0.0)) throw std::invalid_argument("rotation_frequency_hz: times all equal");
+  return -covariance / variance / (2.0 * std::numbers::pi);
+}
+
+}  // namespace rbcsim::cases

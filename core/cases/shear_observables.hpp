@@ -1,0 +1,58 @@
+// The observables of the shear experiment (DESIGN.md §4 "shear", paper §3.2): pure functions of a
+// cell's vertex positions in the shear frame (flow along x, velocity gradient along y, vorticity
+// along z; the shear plane is x-y).
+//
+//   length        the largest vertex-vertex distance (the paper's "greatest diameter", what
+//                 Bessis & Mohandas read from the diffraction pattern);
+//   inclination   the angle from the flow direction (+x) towards +y of the major principal axis
+//                 of the vertex cloud's second moments in the shear plane, degrees in (-90, 90];
+//   breadth       the extent of the cell along the in-plane direction perpendicular to that axis;
+//   deformation   Taylor's index (L - B) / (L + B);
+//   tank-treading the rotation of one tracked membrane point about the centroid in the shear
+//                 plane, counted positive in the sense of the flow's vorticity (clockwise seen
+//                 from +z when u_x grows with y);
+//   smoothness    the RMS over the interior edges of the change of the dihedral angle from the
+//                 stress-free reference, rad: 0 for a rigid motion, large for a wrinkled or
+//                 creased surface (the paper's "unnatural deformations" without F_ad and F_tc).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "common/vec3.hpp"
+
+namespace rbcsim::cases {
+
+struct ShearShape {
+  double length_um = 0.0;
+  double breadth_um = 0.0;
+  double deformation_index = 0.0;
+  double inclination_deg = 0.0;
+};
+
+// Largest distance between two vertices (all pairs: O(n^2), a few ms at 2562 vertices).
+double largest_vertex_distance_um(std::span<const Vec3> positions_um);
+
+// Angle of the major axis of the vertices' second moments in the x-y plane, rad in (-pi/2, pi/2].
+double in_plane_major_axis_rad(std::span<const Vec3> positions_um);
+
+ShearShape measure_shear_shape(std::span<const Vec3> positions_um);
+
+// RMS of (theta - theta0) over the edges, rad; the spans have one angle per edge.
+double dihedral_change_rms_rad(std::span<const double> dihedral_angles_rad,
+                               std::span<const double> reference_angles_rad);
+
+// The angle of `point` about `centre` in the x-y plane, rad in (-pi, pi].
+double in_plane_angle_rad(const Vec3& point, const Vec3& centre);
+
+// The unwrapped angle nearest to `previous_unwrapped_rad` with the principal value `angle_rad`:
+// valid while the point turns by less than pi between two samples.
+double unwrap_angle_rad(double previous_unwrapped_rad, double angle_rad);
+
+// Rotation frequency from unwrapped angles sampled at times_s: minus the least-squares slope of
+// angle against time over 2 pi, Hz (positive for clockwise turning seen from +z). Needs two
+// samples at different times at least (std::invalid_argument otherwise).
+double rotation_frequency_hz(std::span<const double> times_s,
+                             std::span<const double> unwrapped_angles_rad);
+
+}  // namespace rbcsim::cases

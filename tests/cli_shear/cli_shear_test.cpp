@@ -1,0 +1,114 @@
+// `rbcsim shear` end to end: the built binary on a coarse cell (642 vertices on a 1 um lattice,
+// one unit of strain per rate, a second or two), the run directory it writes, exit codes and
+// diagnostics.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "io/csv_table.hpp"
+#include "support/json_schema_check.hpp"
+#include "support/run_rbcsim.hpp"
+#include "support/scratch_directory.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using rbcsim::testing::read_text;
+using rbcsim::testing::run_rbcsim;
+using rbcsim::testing::ScratchDirectory;
+
+constexpr const char* kCoarseRun =
+    "shear --set mesh.subdivisions=3 --set lattice.spacing_um=1 "
+    "--set shear.max_reynolds_number=0.4 --set shear.width_diameters=1.6 "
+    "--set shear.gap_diameters=2 --max-strain 1 ";
+
+nlohmann::json read_json(const fs::path& file) { return nlohmann::json::parse(read_text(file)); }
+
+TEST(CliShear, WritesTheRunDirectoryAndPrintsItsResultAsJson) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const auto result = run_rbcsim(std::string(kCoarseRun) + "--rates 0,500 --threads 2 --json " +
+                                     "--output '" + run_dir.string() + "'",
+                                 scratch.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.err, "");  // stderr is not a terminal: no progress
+  const auto printed = nlohmann::json::parse(result.out);
+  EXPECT_EQ(printed, read_json(run_dir / "result.json"));
+  EXPECT_EQ(printed["command"], "shear");
+  EXPECT_EQ(printed["status"], "ok");
+  EXPECT_EQ(printed["threads"], 2);
+  const auto& shear = printed["shear"];
+  EXPECT_EQ(shear["boundary"], "lees-edwards");
+  ASSERT_EQ(shear["rates"].size(), 2u);
+  EXPECT_EQ(shear["rates"][1]["shear_rate_per_s"], 500.0);
+  EXPECT_GT(shear["rates"][1]["viscosity_scale"].get<double>(), 1.0);
+  EXPECT_GT(shear["rates"][1]["length_um"].get<double>(),
+            shear["rates"][0]["length_um"].get<double>());
+  const auto schema = read_json(fs::path(RBCSIM_SOURCE_DIR) / "schemas/result.schema.json");
+  EXPECT_EQ(rbcsim::testing::schema_problems(printed, schema), std::vector<std::string>{});
+
+  const auto config = read_json(run_dir / "config.json");
+  EXPECT_EQ(config["run"]["command"], "shear");
+  EXPECT_EQ(config["run"]["mesh_source"], "built-in discocyte level 3");
+  EXPECT_EQ(config["shear"]["rates_per_s"], "0,500");
+  EXPECT_EQ(config["shear"]["max_strain"], 1.0);
+
+  const auto table = rbcsim::io::read_csv_file(run_dir / "shear.csv");
+  EXPECT_EQ(table.numbers("shear_rate_per_s"), (std::vector<double>{0, 500}));
+  EXPECT_EQ(table.numbers("length_um")[1], shear["rates"][1]["length_um"].get<double>());
+  EXPECT_TRUE(fs::exists(run_dir / "shapes/shear_000.vtp"));
+  EXPECT_TRUE(fs::exists(run_dir / "shapes/shear_001.vtp"));
+  const auto collection = read_text(run_dir / "shear.pvd");
+  EXPECT_NE(collection.find("timestep=\"500\""), std::string::npos) << collection;
+}
+
+TEST(CliShear, TextTablePrintsReynoldsAndCapillaryNumbers) {
+  const ScratchDirectory scratch;
+  const auto result = run_rbcsim(std::string(kCoarseRun) + "--rates 1000 --threads 1 --output '" +
+                                     (scratch.path() / "run").string() + "'",
+                                 scratch.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_NE(result.out.find("rate_1/s   sim_rate       Re       Ca"), std::string::npos)
+      << result.out;
+}
+
+TEST(CliShear, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
+  const ScratchDirectory scratch;
+  const auto out = (scratch.path() / "run").string();
+  const auto negative = run_rbcsim("shear --rates=-5 --output '" + out + "'", scratch.path());
+  EXPECT_EQ(negative.exit_code, 2);
+  EXPECT_EQ(negative.err,
+            "rbcsim: error: --rates: shear rates must be >= 0 1/s (the flow direction is fixed)\n");
+  const auto boundary = run_rbcsim("shear --boundary slip --output '" + out + "'", scratch.path());
+  EXPECT_EQ(boundary.exit_code, 2);
+  EXPECT_NE(boundary.err.find("shear.boundary"), std::string::npos) << boundary.err;
+  const auto mach =
+      run_rbcsim("shear --rates 1e7 --set shear.viscosity_scaling=false --output '" + out + "'",
+                 scratch.path());
+  EXPECT_EQ(mach.exit_code, 2);
+  EXPECT_NE(mach.err.find("shear rate 1e+07 1/s"), std::string::npos) << mach.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// An instability (here: any vertex motion counts as too fast): exit 1, the run directory still
+// written with status "failed", the rate's failure dump kept.
+TEST(CliShear, InstabilityExitsOneAndRecordsTheFailure) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const auto result = run_rbcsim(
+      std::string(kCoarseRun) + "--rates 2000 --set stability.max_vertex_step_dx=1e-12 --output '" +
+          run_dir.string() + "'",
+      scratch.path());
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_EQ(result.err.rfind("rbcsim: failed: shear: rate 2000 1/s: step 1", 0), 0u) << result.err;
+  const auto written = read_json(run_dir / "result.json");
+  EXPECT_EQ(written["status"], "failed");
+  EXPECT_EQ(written["shear"]["rates"][0]["steady"], false);
+  EXPECT_TRUE(fs::exists(run_dir / "rate_000/failure/failure.json"));
+  const auto schema = read_json(fs::path(RBCSIM_SOURCE_DIR) / "schemas/result.schema.json");
+  EXPECT_EQ(rbcsim::testing::schema_problems(written, schema), std::vector<std::string>{});
+}
+
+}  // namespace
