@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cases/calibration.hpp"
 #include "command_registry.hpp"

@@ -100,10 +100,13 @@ TwoTrianglePatchMeasurement measure_two_triangle_patch(
   return measurement;
 }
 
-double analytic_two_triangle_bending_modulus_J(const membrane::MembraneParameters& parameters) {
+double analytic_two_triangle_bending_modulus_J(const membrane::MembraneParameters& parameters,
+                                               double edge_um) {
   const double tau = parameters.tau_bend_rad;
+  const double arm_ratio =
+      parameters.distribution == "paper" ? edge_um / parameters.force_length_scale_um : 1.0;
   return parameters.k_bend_kBT * parameters.thermal_energy_pN_um * (1.0 + 1.0 / (tau * tau)) / 2.0 *
-         kJoulePerPicoNewtonMicrometre;
+         arm_ratio * kJoulePerPicoNewtonMicrometre;
 }
 
 UniformCurvatureStiffness measure_uniform_curvature_stiffness(

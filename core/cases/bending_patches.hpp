@@ -31,11 +31,12 @@ struct TwoTrianglePatchMeasurement {
 TwoTrianglePatchMeasurement measure_two_triangle_patch(
     const membrane::MembraneParameters& parameters, double edge_um, double angle_rad);
 
-// D of the same pair in closed form (README): the hinge energy (sqrt 3 / 2) k_b kBT energy(d)
-// (`gradient`; the `paper` wing push (k_b kBT / L0) slope(d) at h = (sqrt 3 / 2) a gives the same
-// moment when a = L0) has the moment stiffness (sqrt 3 / 2) k_b kBT (1 + 1/tau_b^2), and
-// dx / a = 1 / sqrt 3, so D = k_b kBT (1 + 1/tau_b^2) / 2 (`gradient`, any a).
-double analytic_two_triangle_bending_modulus_J(const membrane::MembraneParameters& parameters);
+// D of the same pair in closed form (README): the moment stiffness is K_b (1 + 1/tau_b^2) per rad,
+// with K_b = (sqrt 3 / 2) k_b kBT for `gradient` (the hinge energy's coefficient) and the `paper`
+// wing push (k_b kBT / L0) slope(d) times its arm h = (sqrt 3 / 2) a; with dx / a = 1 / sqrt 3:
+// D = k_b kBT (1 + 1/tau_b^2) / 2, times a / L0 for `paper`.
+double analytic_two_triangle_bending_modulus_J(const membrane::MembraneParameters& parameters,
+                                               double edge_um);
 
 // Second derivatives of the three angle terms' energies along the uniform curvature
 // perturbation of the cell, pN um per rad^2, for the stiffnesses in `parameters` (the energies

@@ -176,7 +176,8 @@ void measure(const mesh::TriangleMesh& cell, Calibration& calibration) {
   calibration.unit_patch = measure_patch_stiffness(parameters, edge_um, settings.strain);
   calibration.analytic_patch = analytic_patch_stiffness(parameters, edge_um);
   calibration.two_triangle = measure_two_triangle_patch(parameters, edge_um, settings.angle_rad);
-  calibration.analytic_bending_modulus_J = analytic_two_triangle_bending_modulus_J(parameters);
+  calibration.analytic_bending_modulus_J =
+      analytic_two_triangle_bending_modulus_J(parameters, edge_um);
   const auto unit = with_unit_stiffness(parameters);
   calibration.unit_bending_modulus_J =
       measure_two_triangle_patch(unit, edge_um, settings.angle_rad).bending_modulus_J;

@@ -6,6 +6,7 @@
 #include "cases/hexagonal_patch.hpp"
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>

@@ -83,26 +83,35 @@ TEST(HexagonalPatch, MeasuredUnitStiffnessMatchesTheClosedForm) {
 
 // Two equilateral triangles of edge a = L0: the wing moment per rad is (sqrt 3 / 2) k_b kBT
 // (1 + 1/tau_b^2) in both distributions, and with dx = a / sqrt 3, D = k_b kBT (1 + 1/tau_b^2) / 2.
+// At another edge the `gradient` D stays, the `paper` one scales with a / L0 (its push has the
+// fixed scale k_b kBT / L0, its arm is the wing's height).
 TEST(TwoTrianglePatch, BendingStiffnessIsTheDihedralSpringsOwn) {
   for (const std::string distribution : {"gradient", "paper"}) {
     MembraneParameters parameters;
     parameters.distribution = distribution;
-    const auto patch = rbcsim::cases::measure_two_triangle_patch(
-        parameters, parameters.force_length_scale_um, kAngleRad);
+    const double edge_um = parameters.force_length_scale_um;
+    const auto patch = rbcsim::cases::measure_two_triangle_patch(parameters, edge_um, kAngleRad);
     const double tau = parameters.tau_bend_rad;
     const double kBT = parameters.thermal_energy_pN_um;
+    const double factor = 1 + 1 / (tau * tau);
     EXPECT_LT(relative(patch.moment_per_angle_pN_um,
-                       std::sqrt(3.0) / 2.0 * parameters.k_bend_kBT * kBT * (1 + 1 / (tau * tau))),
+                       std::sqrt(3.0) / 2.0 * parameters.k_bend_kBT * kBT * factor),
               0.01)
         << distribution;
-    EXPECT_NEAR(patch.hinge_distance_um, parameters.force_length_scale_um / std::sqrt(3.0), 1e-12);
-    EXPECT_LT(relative(patch.bending_modulus_J,
-                       parameters.k_bend_kBT * kBT * 1e-18 * (1 + 1 / (tau * tau)) / 2.0),
-              0.01)
+    EXPECT_NEAR(patch.hinge_distance_um, edge_um / std::sqrt(3.0), 1e-12);
+    const double expected_J = parameters.k_bend_kBT * kBT * 1e-18 * factor / 2.0;
+    EXPECT_LT(relative(patch.bending_modulus_J, expected_J), 0.01) << distribution;
+
+    const double other_edge_um = 0.8 * edge_um;
+    const auto other =
+        rbcsim::cases::measure_two_triangle_patch(parameters, other_edge_um, kAngleRad);
+    const double scale = distribution == "paper" ? 0.8 : 1.0;
+    EXPECT_LT(relative(other.bending_modulus_J, scale * expected_J), 0.01) << distribution;
+    EXPECT_LT(
+        relative(other.bending_modulus_J,
+                 rbcsim::cases::analytic_two_triangle_bending_modulus_J(parameters, other_edge_um)),
+        0.01)
         << distribution;
-    EXPECT_LT(relative(patch.bending_modulus_J,
-                       rbcsim::cases::analytic_two_triangle_bending_modulus_J(parameters)),
-              0.01);
   }
 }
 
