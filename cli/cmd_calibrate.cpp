@@ -107,7 +107,12 @@ void run_calibrate_command(const CalibrateOptions& options) {
   const auto cell_mesh = setup::cell_mesh_from(config);
   for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
 
-  const RunDirectory directory("calibrate", options.common, config);
+  // One thread whatever --threads says: the patches have 8 vertices and the cell mode is a few
+  // force evaluations, so OpenMP barriers cost more than the work (on the loaded 2-core machine:
+  // 0.3 s on one thread, 3 s on two, 7 s at OpenMP's default with spinning waits).
+  auto common = options.common;
+  common.threads = 1;
+  const RunDirectory directory("calibrate", common, config);
   // Bad targets are input errors: found before the run directory exists.
   const auto calibration = cases::run_calibration(cell_mesh.mesh, parameters, settings);
   directory.start(config, cell_mesh);
