@@ -1,6 +1,7 @@
 // rbcsim calibrate: the patch tests (DESIGN.md §4): what the membrane's k parameters mean as
 // moduli, and the k that give target moduli, written as a config file the other commands accept.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -36,6 +37,21 @@ void assign(std::vector<std::string>& assignments, const std::string& path,
   if (value) assignments.push_back(path + "=" + format_number(*value));
 }
 
+void check_fit_names(const std::string& list) {
+  const auto known = cases::calibration_fit_names();
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const auto comma = std::min(list.find(',', start), list.size());
+    const auto name = list.substr(start, comma - start);
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      std::string names;
+      for (const auto& fit : known) names.append(names.empty() ? "" : ", ").append(fit);
+      throw InputError("--fits", "unknown fit " + in_quotes(name) + " (known: " + names + ")");
+    }
+    start = comma + 1;
+  }
+}
+
 // The command's own options are --set assignments in disguise, so config.json records them.
 config::Config resolve_calibrate_config(const CalibrateOptions& options) {
   auto common = options.common;
@@ -49,7 +65,10 @@ config::Config resolve_calibrate_config(const CalibrateOptions& options) {
   }
   if (shear_area) assignments.push_back("calibrate.target.moduli=shear-area");
   if (young_poisson) assignments.push_back("calibrate.target.moduli=young-poisson");
-  if (options.fits) assignments.push_back("calibrate.fits=" + *options.fits);
+  if (options.fits) {
+    check_fit_names(*options.fits);  // diagnose as --fits, not --set
+    assignments.push_back("calibrate.fits=" + *options.fits);
+  }
   assign(assignments, "calibrate.target.shear_modulus_uN_per_m", options.shear_uN_per_m);
   assign(assignments, "calibrate.target.area_modulus_uN_per_m", options.area_uN_per_m);
   assign(assignments, "calibrate.target.young_modulus_uN_per_m", options.young_uN_per_m);

@@ -77,6 +77,10 @@ TEST(CliCalibrate, UnreachableTargetIsBadInputAndWritesNothing) {
   const auto both =
       run_rbcsim("calibrate --target-shear-modulus 10 --target-poisson-ratio 0.3", scratch.path());
   EXPECT_EQ(both.exit_code, 2);
+  const auto unknown_fit = run_rbcsim("calibrate --fits bend,stiffness", scratch.path());
+  EXPECT_EQ(unknown_fit.exit_code, 2);
+  EXPECT_NE(unknown_fit.err.find("--fits: unknown fit \"stiffness\""), std::string::npos)
+      << unknown_fit.err;
 }
 
 }  // namespace
