@@ -1,7 +1,10 @@
 #include "cases/bending_patches.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "membrane/force_terms.hpp"
@@ -47,7 +50,15 @@ class UniformCurvatureMode {
   UniformCurvatureMode(const mesh::TriangleMesh& cell,
                        const membrane::MembraneParameters& parameters)
       : cell_(cell), parameters_(parameters), topology_(mesh::MeshTopology::build(cell)) {
-    parameters_.forces = {"bend", "area_difference", "total_curvature"};
+    // The cell-level terms only where membrane.forces has them: a switched-off term adds nothing
+    // to the cell's bending modulus (and its reference need not suit it, e.g. DeltaA0 ~ 0).
+    parameters_.forces = {"bend"};
+    for (const std::string term : {"area_difference", "total_curvature"}) {
+      if (std::find(parameters.forces.begin(), parameters.forces.end(), term) !=
+          parameters.forces.end()) {
+        parameters_.forces.push_back(term);
+      }
+    }
     parameters_.vertex_force_cap_pN = INFINITY;
     rest_ = membrane::capture_reference_state(cell.positions_um, cell.triangles, topology_);
     for (std::size_t e = 0; e < topology_.edge_count(); ++e) {
@@ -69,8 +80,13 @@ class UniformCurvatureMode {
     auto workspace = model.make_workspace();
     auto forces = model.make_forces();
     model.compute(cell_.positions_um, workspace, forces);
-    return {forces.term("bend").energy_pN_um, forces.term("area_difference").energy_pN_um,
-            forces.term("total_curvature").energy_pN_um};
+    const auto energy_pN_um = [&](std::string_view term) {
+      const auto enabled = model.enabled_term_names();
+      return std::find(enabled.begin(), enabled.end(), term) == enabled.end()
+                 ? 0.0
+                 : forces.term(term).energy_pN_um;
+    };
+    return {energy_pN_um("bend"), energy_pN_um("area_difference"), energy_pN_um("total_curvature")};
   }
 
  private:

@@ -40,7 +40,7 @@ double analytic_two_triangle_bending_modulus_J(const membrane::MembraneParameter
 
 // Second derivatives of the three angle terms' energies along the uniform curvature
 // perturbation of the cell, pN um per rad^2, for the stiffnesses in `parameters` (the energies
-// are proportional to k: exactly linear).
+// are proportional to k: exactly linear). Zero for a cell-level term not in parameters.forces.
 struct UniformCurvatureStiffness {
   double bend_pN_um = 0.0;
   double area_difference_pN_um = 0.0;

@@ -133,6 +133,11 @@ void fit_curvature_terms(const mesh::TriangleMesh& cell, Calibration& calibratio
                          " kBT: the area-difference and total-curvature terms only add to it");
   }
   const double ratio = settings.area_difference_per_total_curvature;
+  if (unit.area_difference_pN_um == 0.0 && unit.total_curvature_pN_um == 0.0) {
+    throw InputError("calibrate.fits",
+                     "curvature_terms needs area_difference or total_curvature in "
+                     "membrane.forces");
+  }
   fitted.k_total_curvature_kBT = (target_J / unit_J - fitted.k_bend_kBT) * unit.bend_pN_um /
                                  (ratio * unit.area_difference_pN_um + unit.total_curvature_pN_um);
   fitted.k_area_difference_kBT = ratio * fitted.k_total_curvature_kBT;

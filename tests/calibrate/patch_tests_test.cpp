@@ -154,6 +154,22 @@ TEST(UniformCurvatureMode, EnergiesMatchTheTermsClosedForms) {
   EXPECT_LT(relative(stiffness.total_curvature_pN_um, total_curvature), 0.01);
 }
 
+// A cell-level term switched off in membrane.forces adds nothing; with both off there is nothing
+// to fit.
+TEST(UniformCurvatureMode, SwitchedOffTermsAddNothing) {
+  const auto cell = small_discocyte();
+  MembraneParameters parameters;
+  const auto all = rbcsim::cases::measure_uniform_curvature_stiffness(cell, parameters, kAngleRad);
+  parameters.forces = {"link", "bend", "area", "volume", "total_curvature"};
+  const auto without =
+      rbcsim::cases::measure_uniform_curvature_stiffness(cell, parameters, kAngleRad);
+  EXPECT_EQ(without.area_difference_pN_um, 0.0);
+  EXPECT_EQ(without.total_curvature_pN_um, all.total_curvature_pN_um);
+  EXPECT_EQ(without.bend_pN_um, all.bend_pN_um);
+  parameters.forces = {"link", "bend", "area", "volume"};
+  EXPECT_THROW(rbcsim::cases::run_calibration(cell, parameters, {}), rbcsim::InputError);
+}
+
 // Targets made from chosen k: the fits must give those k back.
 TEST(CalibrationFits, RecoverKnownStiffnesses) {
   const auto cell = small_discocyte();
