@@ -88,10 +88,8 @@ nlohmann::ordered_json headline(const cases::Calibration& calibration) {
       {"poisson_ratio", network.poisson_ratio},
       {"bending_modulus_J", calibration.two_triangle.bending_modulus_J},
       {"overall_bending_modulus_J", calibration.overall_bending_modulus_J}};
-  for (const auto& [key, value] :
-       cases::fitted_parameters_document(calibration)["membrane"].items()) {
-    numbers["fitted_" + key] = value;
-  }
+  const auto fitted = cases::fitted_parameters_document(calibration);  // outlives the loop
+  for (const auto& [key, value] : fitted["membrane"].items()) numbers["fitted_" + key] = value;
   return numbers;
 }
 
