@@ -18,13 +18,22 @@ void add_output_options(OptionTable& table);
 void add_stability_options(OptionTable& table);
 void add_stretch_options(OptionTable& table);
 void add_shear_options(OptionTable& table);
+void add_calibrate_options(OptionTable& table);
 
 using AddOptionArea = void (*)(OptionTable&);
-inline constexpr std::array<AddOptionArea, 10> kOptionAreas{
-    add_morphology_options, add_physics_options,   add_lattice_options,
-    add_ibm_options,        add_membrane_options,  add_mesh_options,
-    add_output_options,     add_stability_options, add_stretch_options,
+// std::to_array: adding an area does not mean counting them.
+inline constexpr auto kOptionAreas = std::to_array<AddOptionArea>({
+    add_morphology_options,
+    add_physics_options,
+    add_lattice_options,
+    add_ibm_options,
+    add_membrane_options,
+    add_mesh_options,
+    add_output_options,
+    add_stability_options,
+    add_stretch_options,
     add_shear_options,
-};
+    add_calibrate_options,
+});
 
 }  // namespace rbcsim::config

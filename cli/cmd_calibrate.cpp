@@ -1,0 +1,191 @@
+// rbcsim calibrate: the patch tests (DESIGN.md §4): what the membrane's k parameters mean as
+// moduli, and the k that give target moduli, written as a config file the other commands accept.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cases/calibration.hpp"
+#include "command_registry.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common_options.hpp"
+#include "run_directory.hpp"
+#include "setup/calibrate_from_config.hpp"
+#include "setup/membrane_from_config.hpp"
+
+namespace rbcsim::cli {
+namespace {
+
+struct CalibrateOptions {
+  CommonOptions common;
+  std::optional<std::string> fits;
+  std::optional<double> shear_uN_per_m;
+  std::optional<double> area_uN_per_m;
+  std::optional<double> young_uN_per_m;
+  std::optional<double> poisson_ratio;
+  std::optional<double> bending_modulus_J;
+  std::optional<double> overall_bending_modulus_J;
+};
+
+void assign(std::vector<std::string>& assignments, const std::string& path,
+            const std::optional<double>& value) {
+  if (value) assignments.push_back(path + "=" + format_number(*value));
+}
+
+void check_fit_names(const std::string& list) {
+  const auto known = cases::calibration_fit_names();
+  std::size_t start = 0;
+  while (start <= list.size()) {
+    const auto comma = std::min(list.find(',', start), list.size());
+    const auto name = list.substr(start, comma - start);
+    if (std::find(known.begin(), known.end(), name) == known.end()) {
+      std::string names;
+      for (const auto& fit : known) names.append(names.empty() ? "" : ", ").append(fit);
+      throw InputError("--fits", "unknown fit " + in_quotes(name) + " (known: " + names + ")");
+    }
+    start = comma + 1;
+  }
+}
+
+// The command's own options are --set assignments in disguise, so config.json records them.
+config::Config resolve_calibrate_config(const CalibrateOptions& options) {
+  auto common = options.common;
+  auto& assignments = common.config.assignments;
+  const bool shear_area = options.shear_uN_per_m || options.area_uN_per_m;
+  const bool young_poisson = options.young_uN_per_m || options.poisson_ratio;
+  if (shear_area && young_poisson) {
+    throw InputError("--target-young-modulus",
+                     "give the in-plane targets either as shear and area moduli or as Young's "
+                     "modulus and Poisson ratio, not both");
+  }
+  if (shear_area) assignments.push_back("calibrate.target.moduli=shear-area");
+  if (young_poisson) assignments.push_back("calibrate.target.moduli=young-poisson");
+  if (options.fits) {
+    check_fit_names(*options.fits);  // diagnose as --fits, not --set
+    assignments.push_back("calibrate.fits=" + *options.fits);
+  }
+  assign(assignments, "calibrate.target.shear_modulus_uN_per_m", options.shear_uN_per_m);
+  assign(assignments, "calibrate.target.area_modulus_uN_per_m", options.area_uN_per_m);
+  assign(assignments, "calibrate.target.young_modulus_uN_per_m", options.young_uN_per_m);
+  assign(assignments, "calibrate.target.poisson_ratio", options.poisson_ratio);
+  assign(assignments, "calibrate.target.bending_modulus_J", options.bending_modulus_J);
+  assign(assignments, "calibrate.target.overall_bending_modulus_J",
+         options.overall_bending_modulus_J);
+  return resolve_config(common);
+}
+
+nlohmann::ordered_json headline(const cases::Calibration& calibration) {
+  const auto& network = calibration.hexagonal.network;
+  nlohmann::ordered_json numbers = {
+      {"E_s_uN_per_m", network.young_uN_per_m},
+      {"mu_uN_per_m", network.shear_uN_per_m},
+      {"K_uN_per_m", network.area_uN_per_m},
+      {"poisson_ratio", network.poisson_ratio},
+      {"bending_modulus_J", calibration.two_triangle.bending_modulus_J},
+      {"overall_bending_modulus_J", calibration.overall_bending_modulus_J}};
+  const auto fitted = cases::fitted_parameters_document(calibration);  // outlives the loop
+  for (const auto& [key, value] : fitted["membrane"].items()) numbers["fitted_" + key] = value;
+  return numbers;
+}
+
+// One block per patch test: quantity, rbcsim's value, the paper's.
+void print_table(const nlohmann::ordered_json& result, const RunDirectory& directory) {
+  const auto& section = result["calibrate"];
+  const auto& paper = section["paper"];
+  std::printf("calibrate, %s (membrane distribution and kernel as configured)\n",
+              result["morphology"].get<std::string>().c_str());
+  for (const auto& [test, values] : section.items()) {
+    if (test == "paper") continue;
+    std::printf("\n%-34s %14s %14s\n", test.c_str(), "rbcsim", "paper");
+    const auto paper_test = paper.find(test);
+    for (const auto& [quantity, value] : values.items()) {
+      std::string paper_value = "-";
+      if (paper_test != paper.end() && paper_test->contains(quantity)) {
+        paper_value = format_number((*paper_test)[quantity].get<double>());
+      }
+      std::printf("  %-32s %14.6g %14s\n", quantity.c_str(), value.get<double>(),
+                  paper_value.c_str());
+    }
+  }
+  std::printf("\nfitted parameters: %s\nwall time %.2f s, %d thread(s); run directory %s\n",
+              (directory.path() / "parameters.json").c_str(), directory.elapsed_s(),
+              directory.threads(), directory.path().c_str());
+}
+
+void run_calibrate_command(const CalibrateOptions& options) {
+  const auto config = resolve_calibrate_config(options);
+  const auto settings = setup::calibration_settings_from(config);
+  const auto parameters = setup::membrane_parameters_from(config);
+  const auto cell_mesh = setup::cell_mesh_from(config);
+  for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
+
+  // One thread whatever --threads says: the patches have 8 vertices and the cell mode is a few
+  // force evaluations, so OpenMP barriers cost more than the work (on the loaded 2-core machine:
+  // 0.3 s on one thread, 3 s on two, 7 s at OpenMP's default with spinning waits).
+  auto common = options.common;
+  common.threads = 1;
+  const RunDirectory directory("calibrate", common, config);
+  // Bad targets are input errors: found before the run directory exists.
+  const auto calibration = cases::run_calibration(cell_mesh.mesh, parameters, settings);
+  directory.start(config, cell_mesh);
+  directory.write_json("parameters.json", cases::fitted_parameters_document(calibration));
+  auto result = directory.result_head(true);
+  result["headline"] = headline(calibration);
+  result["files"] = {{"config", "config.json"}, {"parameters", "parameters.json"}};
+  result["calibrate"] = cases::calibrate_result_section(calibration);
+  directory.write_json("result.json", result);
+
+  if (options.common.json) {
+    std::cout << result.dump(2) << '\n';
+  } else if (!options.common.quiet) {
+    print_table(result, directory);
+  }
+}
+
+void attach_calibrate(CLI::App& application) {
+  auto options = std::make_shared<CalibrateOptions>();
+  auto* command = application.add_subcommand(
+      "calibrate",
+      "Patch tests: moduli of the membrane's k parameters (hexagonal and two-triangle patches, "
+      "the cell's overall bending) and the k fitted to target moduli, as a config file");
+  command
+      ->add_option("--fits", options->fits,
+                   "Fits to run, comma-separated: link_area, bend, curvature_terms (default all)")
+      ->type_name("LIST");
+  command
+      ->add_option("--target-shear-modulus", options->shear_uN_per_m,
+                   "Target shear modulus mu in uN/m (default 10.15, the paper's)")
+      ->type_name("UN_PER_M");
+  command
+      ->add_option("--target-area-modulus", options->area_uN_per_m,
+                   "Target area-compression modulus K in uN/m (default 28.2)")
+      ->type_name("UN_PER_M");
+  command
+      ->add_option("--target-young-modulus", options->young_uN_per_m,
+                   "Target 2D Young's modulus E_s in uN/m (instead of mu and K)")
+      ->type_name("UN_PER_M");
+  command
+      ->add_option("--target-poisson-ratio", options->poisson_ratio,
+                   "Target 2D Poisson ratio (with --target-young-modulus)")
+      ->type_name("NU");
+  command
+      ->add_option("--target-bending-modulus", options->bending_modulus_J,
+                   "Target bending stiffness D of the two-triangle patch in J (default 2e-19)")
+      ->type_name("J");
+  command
+      ->add_option("--target-overall-bending-modulus", options->overall_bending_modulus_J,
+                   "Target overall bending modulus of the cell in J (default 2.5e-19)")
+      ->type_name("J");
+  add_common_options(command, options->common);
+  command->callback([options] { run_calibrate_command(*options); });
+}
+
+const bool registered = register_command({"calibrate", 20, attach_calibrate});
+
+}  // namespace
+}  // namespace rbcsim::cli

@@ -1,0 +1,86 @@
+// `rbcsim calibrate` end to end on a coarse cell (level 2): the run directory, result.json
+// against its schema, parameters.json fed back through --config, and bad input.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "support/json_schema_check.hpp"
+#include "support/run_rbcsim.hpp"
+#include "support/scratch_directory.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using rbcsim::testing::read_text;
+using rbcsim::testing::run_rbcsim;
+using rbcsim::testing::ScratchDirectory;
+
+constexpr const char* kCoarseCell = "--set mesh.subdivisions=2 ";
+
+nlohmann::json read_json(const fs::path& file) { return nlohmann::json::parse(read_text(file)); }
+
+double relative(double value, double expected) {
+  return std::abs(value - expected) / std::abs(expected);
+}
+
+TEST(CliCalibrate, WritesARunDirectoryWhoseParametersReachTheTargets) {
+  const ScratchDirectory scratch;
+  const auto first = scratch.path() / "first";
+  const auto result = run_rbcsim(std::string("calibrate ") + kCoarseCell +
+                                     "--target-shear-modulus 7.3 --target-area-modulus 20 "
+                                     "--threads 1 --json --output '" +
+                                     first.string() + "'",
+                                 scratch.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto printed = nlohmann::json::parse(result.out);
+  EXPECT_EQ(printed, read_json(first / "result.json"));
+  EXPECT_EQ(printed["command"], "calibrate");
+  EXPECT_EQ(printed["status"], "ok");
+  const auto schema = read_json(fs::path(RBCSIM_SOURCE_DIR) / "schemas/result.schema.json");
+  EXPECT_EQ(rbcsim::testing::schema_problems(printed, schema), std::vector<std::string>{});
+  EXPECT_EQ(read_json(first / "config.json")["run"]["command"], "calibrate");
+  const auto& calibrate = printed["calibrate"];
+  EXPECT_EQ(calibrate["paper"]["hexagonal"]["E_s_uN_per_m"], 29.85);
+  EXPECT_LT(calibrate["hexagonal_fit"]["relative_residual"].get<double>(), 1e-3);
+
+  // Fed back: the hexagonal patch measured with the fitted k gives the targets.
+  const auto parameters = first / "parameters.json";
+  const auto fitted = read_json(parameters);
+  EXPECT_EQ(fitted["membrane"].size(), 5u);
+  const auto second =
+      run_rbcsim(std::string("calibrate ") + kCoarseCell + "--config '" + parameters.string() +
+                     "' --fits bend --json --output '" + (scratch.path() / "second").string() + "'",
+                 scratch.path());
+  ASSERT_EQ(second.exit_code, 0) << second.err;
+  const auto measured = nlohmann::json::parse(second.out)["calibrate"];
+  EXPECT_LT(relative(measured["hexagonal"]["mu_uN_per_m"].get<double>(), 7.3), 1e-3);
+  EXPECT_LT(relative(measured["hexagonal"]["K_uN_per_m"].get<double>(), 20.0), 1e-3);
+  EXPECT_LT(relative(measured["overall_bending"]["bending_modulus_J"].get<double>(), 2.5e-19),
+            1e-3);
+  EXPECT_FALSE(measured.contains("hexagonal_fit"));
+}
+
+TEST(CliCalibrate, UnreachableTargetIsBadInputAndWritesNothing) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const auto result = run_rbcsim(std::string("calibrate ") + kCoarseCell +
+                                     "--target-shear-modulus 10 --target-area-modulus 5 "
+                                     "--output '" +
+                                     run_dir.string() + "'",
+                                 scratch.path());
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("calibrate.target.area_modulus_uN_per_m"), std::string::npos)
+      << result.err;
+  EXPECT_FALSE(fs::exists(run_dir));
+  const auto both =
+      run_rbcsim("calibrate --target-shear-modulus 10 --target-poisson-ratio 0.3", scratch.path());
+  EXPECT_EQ(both.exit_code, 2);
+  const auto unknown_fit = run_rbcsim("calibrate --fits bend,stiffness", scratch.path());
+  EXPECT_EQ(unknown_fit.exit_code, 2);
+  EXPECT_NE(unknown_fit.err.find("--fits: unknown fit \"stiffness\""), std::string::npos)
+      << unknown_fit.err;
+}
+
+}  // namespace
