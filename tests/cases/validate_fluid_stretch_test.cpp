@@ -2,7 +2,8 @@
 // the paper's resolution (N = 4, 2562 vertices, dx = 0.5 um), all six terms, the 13 forces of
 // Mills et al. (2004), one simulation. Asserts that every force reaches a steady state, that the
 // curve is monotonic and that it lies on the quasi-static equilibria (the same physics); prints
-// the curve, its distance from the measurements, steps and wall time.
+// the curve, its distance from the measurements, steps and wall time. At plasma's viscosity (the
+// default) expect 0.6-1.2 M steps per force: hours per force (README "rbcsim stretch").
 #include <gtest/gtest.h>
 
 #include <omp.h>
@@ -49,9 +50,11 @@ TEST(ValidateFluidStretch, MillsCurveAtThePapersResolution) {
         p.force_pN, p.axial_um, q.axial_um, reference[i].axial.mean_um, p.transverse_um,
         q.transverse_um, reference[i].transverse.mean_um, p.steps, p.max_mach_number,
         p.max_reynolds_number);
-    // The tolerance of the low-resolution test (fluid_stretch_test.cpp), for the same reasons.
-    EXPECT_NEAR(p.axial_um, q.axial_um, 0.25) << p.force_pN;
-    EXPECT_NEAR(p.transverse_um, q.transverse_um, 0.25) << p.force_pN;
+    // The steady criterion stops short of the equilibrium by rate * D * tau_slow
+    // (fluid_stretch_test.cpp); over the level-2 curve this lag grew with the force to 0.41 um
+    // axial at 130 pN (0.19 um transverse): 0.5 um allowed.
+    EXPECT_NEAR(p.axial_um, q.axial_um, 0.5) << p.force_pN;
+    EXPECT_NEAR(p.transverse_um, q.transverse_um, 0.5) << p.force_pN;
     EXPECT_LT(p.max_mach_number, 0.1) << p.force_pN;
     if (i > 0) {
       EXPECT_GT(p.axial_um, fluid.points[i - 1].axial_um);
