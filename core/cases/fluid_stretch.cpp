@@ -106,6 +106,31 @@ double largest_norm(std::span<const Vec3> vectors) {
   return largest;
 }
 
+// Where a force's run started, and the largest vertex speed (lattice units) since.
+struct ForceRunStart {
+  std::size_t step = 0;
+  std::size_t capped_steps = 0;
+  double max_speed_lu = 0.0;
+};
+
+// The observables of the state reached and what it took to reach it.
+void measure_point(const CoupledSimulation& simulation, std::span<const Vec3> positions_um,
+                   const ForceRunStart& start, StretchPoint& point) {
+  const auto& units = simulation.units();
+  point.steps = simulation.time_step() - start.step;
+  point.time_s = units.to_physical(units::PhysicalUnit::time_s, static_cast<double>(point.steps));
+  point.axial_um = axial_diameter_um(positions_um);
+  point.transverse_um = transverse_diameter_um(positions_um);
+  point.residual_force_pN = largest_norm(simulation.cell(0).total_forces_pN());
+  point.force_cap_hits = simulation.capped_steps_per_cell().front() - start.capped_steps;
+  point.max_mach_number = start.max_speed_lu / kLatticeSoundSpeed;
+  const double viscosity_m2_per_s = units.to_physical(
+      units::PhysicalUnit::kinematic_viscosity_m2_per_s, units.lattice_kinematic_viscosity());
+  point.max_reynolds_number =
+      units.to_physical(units::PhysicalUnit::velocity_m_per_s, start.max_speed_lu) *
+      point.axial_um * 1e-6 / viscosity_m2_per_s;
+}
+
 std::string not_steady(std::span<const StretchPoint> points, double max_time_s) {
   std::string forces;
   for (const auto& point : points) {
@@ -189,22 +214,14 @@ StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const Stretch
     }
     point.wall_time_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    point.steps = simulation->time_step() - start_step;
-    point.time_s = units.to_physical(units::PhysicalUnit::time_s, static_cast<double>(point.steps));
     const auto positions_um = current_positions_um(*simulation);
-    point.axial_um = axial_diameter_um(positions_um);
-    point.transverse_um = transverse_diameter_um(positions_um);
-    const auto& state = simulation->cell(0);
-    point.residual_force_pN = largest_norm(state.total_forces_pN());
-    point.force_cap_hits = simulation->capped_steps_per_cell().front() - start_capped;
-    point.max_mach_number = max_speed_lu / kLatticeSoundSpeed;
-    point.max_reynolds_number =
-        units.to_physical(units::PhysicalUnit::velocity_m_per_s, max_speed_lu) * point.axial_um *
-        1e-6 / fluid_settings.lattice.kinematic_viscosity_m2_per_s;
+    measure_point(*simulation, positions_um, {start_step, start_capped, max_speed_lu}, point);
     run.points.push_back(point);
     if (observer) {
-      observer(
-          {run.points.back(), positions_um, &state.membrane_forces(), state.external_forces_pN()});
+      // After a membrane failure its forces are those of a shape at a force law's limit: none.
+      const auto& state = simulation->cell(0);
+      observer({run.points.back(), positions_um, run.ok() ? &state.membrane_forces() : nullptr,
+                state.external_forces_pN()});
     }
     if (!run.ok()) return run;
   }
