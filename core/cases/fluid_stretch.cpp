@@ -7,6 +7,7 @@
 #include <optional>
 #include <string>
 
+#include "cases/curvature_kinks.hpp"
 #include "cases/stretch_geometry.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -173,12 +174,16 @@ StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const Stretch
   // The tweezer forces are linear in F: those of 1 pN, scaled by the ramped force.
   const auto unit_tweezers_pN = tweezer_forces_pN(model.vertex_count(), cell.patches, 1.0);
   ForceRamp ramp;
-  simulation->add_external_force([&](std::size_t, const coupling::Cell&,
+  // The total-curvature kinks smoothed as in the quasi-static mode (curvature_kinks.hpp): the
+  // same model, and no force that flips sign with a flat edge's angle from one step to the next.
+  const CurvatureKinks kinks(simulation->cell(0).model());
+  simulation->add_external_force([&](std::size_t, const coupling::Cell& state,
                                      std::span<Vec3> forces_pN) {
     const double force_pN = ramp.force_pN(simulation->time_s(), fluid_settings.force_ramp_time_s);
     for (std::size_t v = 0; v < forces_pN.size(); ++v) {
       forces_pN[v] += force_pN * unit_tweezers_pN[v];
     }
+    kinks.smooth(state.positions_um(), state.membrane_forces(), forces_pN);
   });
   double max_speed_lu = 0.0;
   simulation->add_observer({"stretch_speed", 1, [&max_speed_lu](const CoupledSimulation& s) {
@@ -220,8 +225,9 @@ StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const Stretch
     if (observer) {
       // After a membrane failure its forces are those of a shape at a force law's limit: none.
       const auto& state = simulation->cell(0);
+      const auto tweezers_pN = tweezer_forces_pN(model.vertex_count(), cell.patches, force_pN);
       observer({run.points.back(), positions_um, run.ok() ? &state.membrane_forces() : nullptr,
-                state.external_forces_pN()});
+                tweezers_pN});
     }
     if (!run.ok()) return run;
   }
