@@ -64,8 +64,8 @@ const StretchRun& reference_fluid_run() {
 // tau ~ 0.03 s in this fluid (measured: with a rate of 0.1 /s the axial diameter was still
 // creeping, 0.06 um further after another 0.03 s), leaving up to rate * D * tau ~ 0.18 um,
 // approached from the previous, less stretched shape. Measured 0.15 um (axial and transverse):
-// 0.25 um allowed. The quasi-static mode's smoothing of the curvature kinks moves it by
-// <= 0.0025 um. This is the cost of the fluid mode, not a difference of the physics.
+// 0.25 um allowed. Both modes smooth the curvature kinks alike: one model. This is the cost of
+// the fluid mode, not a difference of the physics.
 TEST(FluidStretch, AgreesWithTheQuasiStaticEquilibrium) {
   const auto& fluid = reference_fluid_run();
   ASSERT_TRUE(fluid.ok()) << fluid.failure;
