@@ -56,6 +56,15 @@ std::string shape_file_name(std::size_t index) {
   return name.data();
 }
 
+// The work a force took: relaxation iterations (quasi-static) or time steps (fluid).
+std::size_t effort_count(const cases::StretchPoint& point) {
+  return point.steps > 0 ? point.steps : point.iterations;
+}
+
+std::string effort(const cases::StretchPoint& point) {
+  return std::to_string(effort_count(point)) + (point.steps > 0 ? " steps" : " iterations");
+}
+
 // Writes each force's shape as it is reached, and reports progress.
 class ShapeRecorder {
  public:
@@ -69,11 +78,10 @@ class ShapeRecorder {
     const auto file = shape_file_name(entries_.size());
     cases::write_stretch_shape(run_.path() / file, model_.triangles(), state);
     entries_.push_back({state.point.force_pN, file});
-    progress_.update("stretch: " + std::to_string(entries_.size()) + "/" +
-                     std::to_string(force_count_) +
-                     " forces, F = " + format_number(state.point.force_pN) + " pN, " +
-                     std::to_string(state.point.iterations) + " iterations, " +
-                     format_number(std::round(run_.elapsed_s())) + " s");
+    progress_.update(
+        "stretch: " + std::to_string(entries_.size()) + "/" + std::to_string(force_count_) +
+        " forces, F = " + format_number(state.point.force_pN) + " pN, " + effort(state.point) +
+        ", " + format_number(std::round(run_.elapsed_s())) + " s");
   }
 
   const std::vector<io::PvdEntry>& entries() const { return entries_; }
@@ -111,16 +119,21 @@ void print_table(const nlohmann::ordered_json& result, const cases::StretchRun& 
   for (const auto& term : section["forces_terms"]) {
     std::printf(" %s", term.get<std::string>().c_str());
   }
-  std::printf("\n%10s %10s %15s %11s %10s", "force_pN", "axial_um", "transverse_um", "iterations",
-              "converged");
+  const bool fluid = section["mode"] == "fluid";
+  std::printf("\n%10s %10s %15s %11s %10s", "force_pN", "axial_um", "transverse_um",
+              fluid ? "steps" : "iterations", "converged");
   if (verbose) std::printf(" %18s %15s %12s", "residual_force_pN", "force_cap_hits", "wall_time_s");
+  if (verbose && fluid) std::printf(" %16s %20s", "max_mach_number", "max_reynolds_number");
   std::printf("\n");
   for (const auto& point : run.points) {
     std::printf("%10.3f %10.4f %15.4f %11zu %10s", point.force_pN, point.axial_um,
-                point.transverse_um, point.iterations, point.converged ? "yes" : "NO");
+                point.transverse_um, effort_count(point), point.converged ? "yes" : "NO");
     if (verbose) {
       std::printf(" %18.3g %15zu %12.2f", point.residual_force_pN, point.force_cap_hits,
                   point.wall_time_s);
+    }
+    if (verbose && fluid) {
+      std::printf(" %16.3g %20.3g", point.max_mach_number, point.max_reynolds_number);
     }
     std::printf("\n");
   }
@@ -144,7 +157,7 @@ void write_table(const RunDirectory& directory, const cases::StretchRun& run) {
 
 void run_stretch_command(const StretchOptions& options) {
   const auto config = resolve_stretch_config(options);
-  const auto settings = setup::stretch_settings_from(config);
+  auto settings = setup::stretch_settings_from(config);
   const auto parameters = setup::membrane_parameters_from(config);
   const auto cell_mesh = setup::cell_mesh_from(config);
   for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
@@ -153,6 +166,7 @@ void run_stretch_command(const StretchOptions& options) {
 
   const RunDirectory directory("stretch", options.common, config);
   directory.start(config, cell_mesh);
+  settings.fluid.output_directory = directory.path();
   const Progress progress(options.common);
   ShapeRecorder recorder(directory, model, settings.forces_pN.size(), progress);
   const auto run = cases::run_stretch(model, cell, settings, std::ref(recorder));
@@ -167,6 +181,9 @@ void run_stretch_command(const StretchOptions& options) {
   result["headline"] = headline(run, comparison);
   result["files"] = {
       {"config", "config.json"}, {"table", "stretch.csv"}, {"shapes", "stretch.pvd"}};
+  if (std::filesystem::exists(directory.path() / "fluid.vti")) {
+    result["files"]["fluid"] = "fluid.vti";
+  }
   result["stretch"] =
       cases::stretch_result_section(settings.mode, parameters.forces, run.points, comparison);
   directory.write_json("result.json", result);
@@ -188,7 +205,7 @@ void attach_stretch(CLI::App& application) {
   command
       ->add_option("--mode", options->mode,
                    "How each force reaches its steady shape: quasi-static (membrane alone, no "
-                   "fluid; default)")
+                   "fluid; default) or fluid (in fluid at rest, LBM + IBM, to a steady state)")
       ->type_name("MODE");
   command
       ->add_option("--forces", options->forces,

@@ -3,6 +3,7 @@
 #include <array>
 #include <utility>
 
+#include "cases/fluid_stretch.hpp"
 #include "cases/named_table.hpp"
 #include "cases/quasi_static_stretch.hpp"
 #include "cases/stretch_geometry.hpp"
@@ -16,8 +17,9 @@ struct StretchMode {
                     const StretchObserver&);
 };
 
-constexpr std::array<StretchMode, 1> kStretchModes{{
+constexpr std::array<StretchMode, 2> kStretchModes{{
     {"quasi-static", run_quasi_static_stretch},
+    {"fluid", run_fluid_stretch},
 }};
 
 }  // namespace

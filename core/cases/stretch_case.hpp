@@ -9,11 +9,12 @@
 // How the steady shape is reached is a named mode (one table, stretch_case.cpp):
 //   "quasi-static"  the membrane alone relaxed to equilibrium under the tweezer forces
 //                   (quasi_static_stretch.hpp): no fluid, seconds.
-// The fluid-coupled mode (the cell in plasma at rest, LBM + IBM, run to a steady state) becomes
-// one more row of that table once the coupled time loop exists.
+//   "fluid"         the cell in a periodic box of fluid at rest, LBM + IBM, each force run to
+//                   the steady state of the diameters (fluid_stretch.hpp): minutes.
 #pragma once
 
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <span>
 #include <string>
@@ -21,11 +22,41 @@
 
 #include "cases/contact_patches.hpp"
 #include "common/vec3.hpp"
+#include "coupling/coupled_simulation.hpp"
+#include "coupling/stop_criteria.hpp"
+#include "lattice/fluid_solver.hpp"
 #include "membrane/membrane_model.hpp"
 #include "membrane/relaxation.hpp"
 #include "mesh/triangle_mesh.hpp"
+#include "units/unit_converter.hpp"
 
 namespace rbcsim::cases {
+
+// The "fluid" mode (fluid_stretch.hpp). The equilibrium under a static load does not depend on
+// the fluid's viscosity, but the number of steps to reach it grows as nu^2 (dt ~ dx^2 / nu at
+// fixed tau, relaxation time ~ rho nu): the stretch's fluid has its own viscosity.
+struct FluidStretchSettings {
+  // dx, tau, density and the stretch's kinematic viscosity (not physics.plasma_*).
+  units::LatticeParameters lattice{0.5, 1.0, 1025.0, 1.1e-6};
+  lattice::FluidParameters fluid;
+  coupling::CouplingParameters coupling;
+  // Gap between the resting cell and the periodic box's faces on every side; along the pull axis
+  // the box also holds the cell at twice its rest length (Mills et al.: 1.97 at 193 pN).
+  double box_margin_um = 3.0;
+  // The tweezers move from one force to the next linearly over this time, as a trap is moved:
+  // a jump would pull the patch faster than the membrane around it can follow (a transient
+  // strain beyond the force laws' limits at low viscosity).
+  double force_ramp_time_s = 1e-3;
+  // Each force runs until both diameters are steady (coupling::stop_at_steady_state) ...
+  coupling::SteadyStateTolerance steady{
+      .relative_rate_per_s = 0.5, .check_interval_s = 2e-4, .consecutive_checks = 3};
+  // ... or for this long, after which its point is not converged and the run reports it.
+  double max_time_per_force_s = 0.05;
+  // Membrane .vtp time series (vtk/, cell0.pvd) every so often; 0: the per-force shapes only.
+  double snapshot_interval_s = 0.0;
+  // Where failure dumps, the time series and the final fluid.vti go; empty: nowhere.
+  std::filesystem::path output_directory;
+};
 
 struct StretchSettings {
   std::string mode = "quasi-static";
@@ -35,6 +66,7 @@ struct StretchSettings {
   // (force_tolerance_pN on the largest net vertex force, max_iterations).
   std::string relaxation = "fire";
   membrane::RelaxationSettings relaxation_settings{.force_tolerance_pN = 1e-4};
+  FluidStretchSettings fluid;
 };
 
 // The cell in the stretch frame (stretch_geometry.hpp) and its contact patches.
@@ -51,7 +83,13 @@ struct StretchPoint {
   double axial_um = 0.0;
   double transverse_um = 0.0;
   bool converged = false;
-  std::size_t iterations = 0;      // relaxation iterations (quasi-static) at this force
+  std::size_t iterations = 0;  // relaxation iterations (quasi-static) at this force
+  std::size_t steps = 0;       // coupled time steps (fluid) at this force
+  double time_s = 0.0;         // simulated time spent at this force (fluid)
+  // The largest vertex speed at this force as a lattice Mach number u / c_s, and as a cell
+  // Reynolds number u D / nu (D the axial diameter) (fluid).
+  double max_mach_number = 0.0;
+  double max_reynolds_number = 0.0;
   double residual_force_pN = 0.0;  // largest net vertex force at the end
   std::size_t force_cap_hits = 0;  // vertex force cap triggers while relaxing (a safety net)
   double wall_time_s = 0.0;

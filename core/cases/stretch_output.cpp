@@ -25,8 +25,9 @@ void write_stretch_shape(const std::filesystem::path& path,
 }
 
 std::vector<std::string> stretch_table_columns() {
-  return {"force_pN",   "axial_um",          "transverse_um",  "converged",
-          "iterations", "residual_force_pN", "force_cap_hits", "wall_time_s"};
+  return {"force_pN",   "axial_um",          "transverse_um",   "converged",
+          "iterations", "residual_force_pN", "force_cap_hits",  "wall_time_s",
+          "steps",      "simulated_time_s",  "max_mach_number", "max_reynolds_number"};
 }
 
 std::vector<double> stretch_table_row(const StretchPoint& point) {
@@ -37,7 +38,11 @@ std::vector<double> stretch_table_row(const StretchPoint& point) {
           static_cast<double>(point.iterations),
           point.residual_force_pN,
           static_cast<double>(point.force_cap_hits),
-          point.wall_time_s};
+          point.wall_time_s,
+          static_cast<double>(point.steps),
+          point.time_s,
+          point.max_mach_number,
+          point.max_reynolds_number};
 }
 
 nlohmann::ordered_json stretch_result_section(std::string_view mode,
@@ -45,15 +50,24 @@ nlohmann::ordered_json stretch_result_section(std::string_view mode,
                                               std::span<const StretchPoint> points,
                                               const StretchComparison& comparison) {
   auto point_list = nlohmann::ordered_json::array();
+  const bool fluid = mode == "fluid";
   for (const auto& point : points) {
-    point_list.push_back({{"force_pN", point.force_pN},
-                          {"axial_um", point.axial_um},
-                          {"transverse_um", point.transverse_um},
-                          {"converged", point.converged},
-                          {"iterations", point.iterations},
-                          {"residual_force_pN", point.residual_force_pN},
-                          {"force_cap_hits", point.force_cap_hits},
-                          {"wall_time_s", point.wall_time_s}});
+    nlohmann::ordered_json entry = {{"force_pN", point.force_pN},
+                                    {"axial_um", point.axial_um},
+                                    {"transverse_um", point.transverse_um},
+                                    {"converged", point.converged}};
+    if (fluid) {
+      entry["steps"] = point.steps;
+      entry["simulated_time_s"] = point.time_s;
+      entry["max_mach_number"] = point.max_mach_number;
+      entry["max_reynolds_number"] = point.max_reynolds_number;
+    } else {
+      entry["iterations"] = point.iterations;
+    }
+    entry["residual_force_pN"] = point.residual_force_pN;
+    entry["force_cap_hits"] = point.force_cap_hits;
+    entry["wall_time_s"] = point.wall_time_s;
+    point_list.push_back(entry);
   }
   return {{"mode", mode},
           {"forces_terms", force_terms},

@@ -7,6 +7,7 @@
 #include "common/errors.hpp"
 #include "config/embedded_share.hpp"
 #include "config/range.hpp"
+#include "setup/coupling_from_config.hpp"
 
 namespace rbcsim::setup {
 namespace {
@@ -15,6 +16,22 @@ constexpr std::string_view kReferenceForces = "mills2004";
 constexpr std::string_view kMillsFile = "mills2004_stretch.csv";
 // "0:200" without a step: every 25 pN, the spacing of a typical tweezers sweep.
 constexpr std::size_t kDefaultRangeCount = 9;
+
+cases::FluidStretchSettings fluid_stretch_settings_from(const config::Config& config) {
+  cases::FluidStretchSettings settings;
+  settings.lattice = {config.number("lattice.spacing_um"), config.number("lattice.relaxation_time"),
+                      config.number("physics.plasma_density_kg_per_m3"),
+                      config.number("stretch.fluid.kinematic_viscosity_m2_per_s")};
+  settings.fluid = fluid_parameters_from(config);
+  settings.coupling = coupling_parameters_from(config, {});
+  settings.box_margin_um = config.number("stretch.fluid.box_margin_um");
+  settings.force_ramp_time_s = config.number("stretch.fluid.force_ramp_time_s");
+  settings.steady.relative_rate_per_s = config.number("stretch.fluid.steady_relative_rate_per_s");
+  settings.steady.check_interval_s = config.number("stretch.fluid.steady_check_interval_s");
+  settings.max_time_per_force_s = config.number("stretch.fluid.max_time_per_force_s");
+  settings.snapshot_interval_s = config.number("stretch.fluid.snapshot_interval_s");
+  return settings;
+}
 
 }  // namespace
 
@@ -54,6 +71,7 @@ cases::StretchSettings stretch_settings_from(const config::Config& config) {
       config.number("stretch.quasi_static.force_tolerance_pN");
   settings.relaxation_settings.max_iterations =
       static_cast<std::size_t>(config.integer("stretch.quasi_static.max_iterations"));
+  settings.fluid = fluid_stretch_settings_from(config);
   return settings;
 }
 

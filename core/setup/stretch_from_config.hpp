@@ -23,7 +23,8 @@ std::vector<cases::StretchReferencePoint> mills2004_stretch_reference();
 // `source`. Negative forces are rejected (the tweezers pull).
 std::vector<double> stretch_forces_from(std::string_view text, std::string_view source);
 
-// Throws InputError for a bad stretch.forces_pN.
+// Throws InputError for a bad stretch.forces_pN. The fluid mode's output_directory stays empty:
+// the run directory is the caller's.
 cases::StretchSettings stretch_settings_from(const config::Config& config);
 
 }  // namespace rbcsim::setup

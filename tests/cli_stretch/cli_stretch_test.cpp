@@ -104,7 +104,7 @@ TEST(CliStretch, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
   const auto negative = run_rbcsim("stretch --forces=-5 --output '" + out + "'", scratch.path());
   EXPECT_EQ(negative.exit_code, 2);
   EXPECT_EQ(negative.err, "rbcsim: error: --forces: forces must be >= 0 pN (the tweezers pull)\n");
-  const auto mode = run_rbcsim("stretch --mode fluid --output '" + out + "'", scratch.path());
+  const auto mode = run_rbcsim("stretch --mode molten --output '" + out + "'", scratch.path());
   EXPECT_EQ(mode.exit_code, 2);
   EXPECT_NE(mode.err.find("stretch.mode"), std::string::npos) << mode.err;
   const auto contact =
@@ -114,6 +114,40 @@ TEST(CliStretch, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
             "rbcsim: error: stretch.contact.diameter_um: the two contact patches overlap: too "
             "large for this cell\n");
   EXPECT_FALSE(fs::exists(out));
+}
+
+// The fluid mode on the level-2 cell (edges ~1 um) at dx = 2 um (S = 0.5, the paper's ratio): a
+// 11 x 7 x 5 box, a third of plasma's viscosity and a loose steady criterion (this test is about
+// the run directory; tests/cases/fluid_stretch_test.cpp about the physics). result.json names the
+// mode, counts steps and passes its schema; the run directory holds the final flow field.
+TEST(CliStretch, FluidModeWritesStepsAndTheFlowField) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const auto result = run_rbcsim(
+      std::string("stretch ") + kCoarseCell +
+          "--set lattice.spacing_um=2 --set stretch.fluid.kinematic_viscosity_m2_per_s=3.7e-7 "
+          "--set stretch.fluid.steady_relative_rate_per_s=5 --mode fluid --forces 0,10 "
+          "--threads 1 --json "
+          "--output '" +
+          run_dir.string() + "'",
+      scratch.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto printed = nlohmann::json::parse(result.out);
+  const auto& stretch = printed["stretch"];
+  EXPECT_EQ(stretch["mode"], "fluid");
+  ASSERT_EQ(stretch["points"].size(), 2u);
+  for (const auto& point : stretch["points"]) {
+    EXPECT_TRUE(point["converged"].get<bool>());
+    EXPECT_GT(point["steps"].get<int>(), 0);
+    EXPECT_FALSE(point.contains("iterations"));
+  }
+  EXPECT_GT(stretch["points"][1]["axial_um"].get<double>(),
+            stretch["points"][0]["axial_um"].get<double>());
+  const auto schema = read_json(fs::path(RBCSIM_SOURCE_DIR) / "schemas/result.schema.json");
+  EXPECT_EQ(rbcsim::testing::schema_problems(printed, schema), std::vector<std::string>{});
+  EXPECT_EQ(printed["files"]["fluid"], "fluid.vti");
+  EXPECT_TRUE(fs::exists(run_dir / "fluid.vti"));
+  EXPECT_TRUE(fs::exists(run_dir / "shapes/stretch_001.vtp"));
 }
 
 // A force the relaxation cannot reach in its budget: exit 1, the run directory still written,

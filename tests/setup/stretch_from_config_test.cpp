@@ -49,8 +49,38 @@ TEST(StretchFromConfig, ForcesTextIsARangeOrTheReference) {
   EXPECT_EQ(stretch_forces_from("10,5", "x"), (std::vector<double>{10, 5}));
   EXPECT_EQ(error_of("-5:10:5"), "--forces: forces must be >= 0 pN (the tweezers pull)");
   EXPECT_EQ(error_of("abc"), "--forces: range \"abc\": \"abc\" is not a number");
-  EXPECT_THROW(rbcsim::config::resolve_config({.assignments = {"stretch.mode=fluid"}}),
+  EXPECT_THROW(rbcsim::config::resolve_config({.assignments = {"stretch.mode=molten"}}),
                rbcsim::InputError);
+}
+
+// The fluid mode's lattice takes dx, tau and the density from lattice.* and physics.*, but its
+// own viscosity; the steady criterion, time limit, ramp, margin and snapshots from stretch.fluid.*.
+TEST(StretchFromConfig, FluidModeSettings) {
+  const auto config = rbcsim::config::resolve_config(
+      {.assignments = {
+           "stretch.mode=fluid", "lattice.spacing_um=1",
+           "physics.plasma_kinematic_viscosity_m2_per_s=2e-6",
+           "stretch.fluid.kinematic_viscosity_m2_per_s=3e-7", "stretch.fluid.box_margin_um=4",
+           "stretch.fluid.steady_relative_rate_per_s=0.2",
+           "stretch.fluid.steady_check_interval_s=1e-4", "stretch.fluid.max_time_per_force_s=0.5",
+           "stretch.fluid.force_ramp_time_s=0", "stretch.fluid.snapshot_interval_s=1e-3",
+           "ibm.kernel=phi4"}});
+  const auto settings = rbcsim::setup::stretch_settings_from(config);
+  EXPECT_EQ(settings.mode, "fluid");
+  const auto& fluid = settings.fluid;
+  EXPECT_EQ(fluid.lattice.spacing_um, 1.0);
+  EXPECT_EQ(fluid.lattice.relaxation_time, 1.0);
+  EXPECT_EQ(fluid.lattice.density_kg_per_m3, 1025.0);
+  EXPECT_EQ(fluid.lattice.kinematic_viscosity_m2_per_s, 3e-7);
+  EXPECT_EQ(fluid.box_margin_um, 4.0);
+  EXPECT_EQ(fluid.steady.relative_rate_per_s, 0.2);
+  EXPECT_EQ(fluid.steady.check_interval_s, 1e-4);
+  EXPECT_EQ(fluid.max_time_per_force_s, 0.5);
+  EXPECT_EQ(fluid.force_ramp_time_s, 0.0);
+  EXPECT_EQ(fluid.snapshot_interval_s, 1e-3);
+  EXPECT_EQ(fluid.coupling.kernel, "phi4");
+  EXPECT_EQ(fluid.fluid.collision, "trt");
+  EXPECT_TRUE(fluid.output_directory.empty());
 }
 
 }  // namespace

@@ -41,17 +41,62 @@ void add_quasi_static_options(OptionTable& table) {
       .at_least(1);
 }
 
+void add_fluid_options(OptionTable& table) {
+  const auto& fluid = kDefaults.fluid;
+  // Plasma's by default: the equilibrium does not depend on it and the steps to reach it grow as
+  // nu^2, but a third of it already went unstable at 50 pN (core/cases/README.md).
+  table
+      .add_number("stretch.fluid.kinematic_viscosity_m2_per_s", "m^2/s",
+                  fluid.lattice.kinematic_viscosity_m2_per_s,
+                  "Kinematic viscosity of the stretch's fluid (not physics.plasma_*): the steady "
+                  "shapes do not depend on it, the number of steps to reach them grows as its "
+                  "square.")
+      .above(0.0);
+  table
+      .add_number("stretch.fluid.box_margin_um", "um", fluid.box_margin_um,
+                  "Gap between the resting cell and the periodic box on every side; along the "
+                  "pull axis the box also holds the cell at twice its rest length.")
+      .above(0.0);
+  table
+      .add_number("stretch.fluid.force_ramp_time_s", "s", fluid.force_ramp_time_s,
+                  "The tweezers move from one force to the next linearly over this time (a jump "
+                  "strains the membrane at the patch beyond its force laws at low viscosity).")
+      .at_least(0.0);
+  table
+      .add_number("stretch.fluid.steady_relative_rate_per_s", "1/s",
+                  fluid.steady.relative_rate_per_s,
+                  "A force's shape is steady when both diameters change by less than this "
+                  "fraction of themselves per second, over three checks in a row.")
+      .above(0.0);
+  table
+      .add_number("stretch.fluid.steady_check_interval_s", "s", fluid.steady.check_interval_s,
+                  "Simulated time between two checks of the steady state.")
+      .above(0.0);
+  table
+      .add_number("stretch.fluid.max_time_per_force_s", "s", fluid.max_time_per_force_s,
+                  "Simulated time allowed per force; a force not steady by then is reported "
+                  "(converged: false, the run fails after the last force).")
+      .above(0.0);
+  table
+      .add_number("stretch.fluid.snapshot_interval_s", "s", fluid.snapshot_interval_s,
+                  "Membrane .vtp time series (vtk/, cell0.pvd) every so often; 0: only the "
+                  "shape at each force.")
+      .at_least(0.0);
+}
+
 }  // namespace
 
 void add_stretch_options(OptionTable& table) {
   table.add_choice("stretch.mode", cases::stretch_mode_names(), kDefaults.mode,
                    "How each force reaches its steady shape (quasi-static: the membrane alone "
-                   "relaxed to equilibrium, no fluid).");
+                   "relaxed to equilibrium, no fluid; fluid: the cell in fluid at rest, LBM + "
+                   "IBM, each force run to a steady state).");
   table.add_string("stretch.forces_pN", "mills2004",
                    "Total force on each contact patch, pN: \"mills2004\" (the 13 forces of the "
                    "reference data) or a range list such as \"0:200:25\" or \"0,50,100\".");
   add_contact_options(table);
   add_quasi_static_options(table);
+  add_fluid_options(table);
 }
 
 }  // namespace rbcsim::config

@@ -1,0 +1,241 @@
+#include "cases/fluid_stretch.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "cases/curvature_kinks.hpp"
+#include "cases/stretch_geometry.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "coupling/snapshot.hpp"
+
+namespace rbcsim::cases {
+namespace {
+
+using coupling::CoupledSimulation;
+
+// The lattice speed of sound, 1/sqrt(3): Mach = u / c_s.
+const double kLatticeSoundSpeed = 1.0 / std::sqrt(3.0);
+
+std::vector<Vec3> current_positions_um(const CoupledSimulation& simulation) {
+  std::vector<Vec3> positions_um;
+  positions_um.reserve(simulation.cell(0).vertex_count());
+  for (const Vec3& position_lu : simulation.cell(0).positions_lu()) {
+    positions_um.push_back(simulation.frame().to_um(position_lu));
+  }
+  return positions_um;
+}
+
+// One force's stop: both diameters steady, or the force's time is up. Restarted at every force,
+// so that one criterion serves the whole curve of one simulation.
+class ForceStop final : public coupling::StopCriterion {
+ public:
+  explicit ForceStop(const FluidStretchSettings& settings) : settings_(settings) {}
+
+  void start(double now_s) {
+    deadline_s_ = now_s + settings_.max_time_per_force_s;
+    axial_ = coupling::stop_at_steady_state(
+        "the axial diameter",
+        [](const CoupledSimulation& s) { return axial_diameter_um(current_positions_um(s)); },
+        settings_.steady);
+    transverse_ = coupling::stop_at_steady_state(
+        "the transverse diameter",
+        [](const CoupledSimulation& s) { return transverse_diameter_um(current_positions_um(s)); },
+        settings_.steady);
+    steady_ = false;
+  }
+
+  std::optional<std::string> check(const CoupledSimulation& simulation) override {
+    // Both are asked every step: each keeps its own record of checks.
+    const auto axial = axial_->check(simulation);
+    const auto transverse = transverse_->check(simulation);
+    if (axial && transverse) {
+      steady_ = true;
+      return *axial + "; " + *transverse;
+    }
+    // The relative slack absorbs the round-off of steps * dt against a time in seconds.
+    if (simulation.time_s() < deadline_s_ * (1.0 - 1e-12)) return std::nullopt;
+    return "not steady after " + format_number(settings_.max_time_per_force_s) + " s";
+  }
+
+  bool steady() const { return steady_; }
+
+ private:
+  const FluidStretchSettings& settings_;
+  double deadline_s_ = 0.0;
+  std::unique_ptr<coupling::StopCriterion> axial_;
+  std::unique_ptr<coupling::StopCriterion> transverse_;
+  bool steady_ = false;
+};
+
+// The tweezers' force moving linearly from one value to the next.
+struct ForceRamp {
+  double from_pN = 0.0;
+  double to_pN = 0.0;
+  double start_s = 0.0;
+
+  double force_pN(double now_s, double ramp_time_s) const {
+    const double progress = ramp_time_s > 0.0 ? (now_s - start_s) / ramp_time_s : 1.0;
+    return from_pN + (to_pN - from_pN) * std::clamp(progress, 0.0, 1.0);
+  }
+};
+
+std::unique_ptr<CoupledSimulation> make_simulation(const membrane::MembraneModel& model,
+                                                   const StretchCell& cell,
+                                                   const FluidStretchSettings& settings) {
+  const units::UnitConverter units(settings.lattice);
+  const auto box =
+      stretch_box(cell.mesh.positions_um, settings.lattice.spacing_um, settings.box_margin_um);
+  auto fluid = std::make_unique<lattice::FluidSolver>(
+      lattice::LatticeGrid(box.nodes[0], box.nodes[1], box.nodes[2]), settings.fluid);
+  auto parameters = settings.coupling;
+  parameters.run_directory = settings.output_directory;
+  auto simulation = std::make_unique<CoupledSimulation>(std::move(fluid), units,
+                                                        std::move(parameters), box.origin_um);
+  simulation->add_cell(membrane::MembraneModel(cell.mesh, model.reference(), model.parameters()),
+                       cell.mesh.positions_um);
+  return simulation;
+}
+
+double largest_norm(std::span<const Vec3> vectors) {
+  double largest = 0.0;
+  for (const Vec3& v : vectors) largest = std::max(largest, v.norm());
+  return largest;
+}
+
+// Where a force's run started, and the largest vertex speed (lattice units) since.
+struct ForceRunStart {
+  std::size_t step = 0;
+  std::size_t capped_steps = 0;
+  double max_speed_lu = 0.0;
+};
+
+// The observables of the state reached and what it took to reach it.
+void measure_point(const CoupledSimulation& simulation, std::span<const Vec3> positions_um,
+                   const ForceRunStart& start, StretchPoint& point) {
+  const auto& units = simulation.units();
+  point.steps = simulation.time_step() - start.step;
+  point.time_s = units.to_physical(units::PhysicalUnit::time_s, static_cast<double>(point.steps));
+  point.axial_um = axial_diameter_um(positions_um);
+  point.transverse_um = transverse_diameter_um(positions_um);
+  point.residual_force_pN = largest_norm(simulation.cell(0).total_forces_pN());
+  point.force_cap_hits = simulation.capped_steps_per_cell().front() - start.capped_steps;
+  point.max_mach_number = start.max_speed_lu / kLatticeSoundSpeed;
+  const double viscosity_m2_per_s = units.to_physical(
+      units::PhysicalUnit::kinematic_viscosity_m2_per_s, units.lattice_kinematic_viscosity());
+  point.max_reynolds_number =
+      units.to_physical(units::PhysicalUnit::velocity_m_per_s, start.max_speed_lu) *
+      point.axial_um * 1e-6 / viscosity_m2_per_s;
+}
+
+std::string not_steady(std::span<const StretchPoint> points, double max_time_s) {
+  std::string forces;
+  for (const auto& point : points) {
+    if (point.converged) continue;
+    forces += (forces.empty() ? "" : ", ") + format_number(point.force_pN);
+  }
+  if (forces.empty()) return {};
+  return "F = " + forces + " pN: the diameters were not steady after " + format_number(max_time_s) +
+         " s; raise stretch.fluid.max_time_per_force_s or loosen stretch.fluid.steady_*";
+}
+
+}  // namespace
+
+StretchBox stretch_box(std::span<const Vec3> positions_um, double dx_um, double margin_um) {
+  Vec3 low = positions_um.front();
+  Vec3 high = positions_um.front();
+  for (const Vec3& p : positions_um) {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  Vec3 extent_um = high - low;
+  extent_um.x() *= 2.0;  // room for the cell at twice its rest length along the pull
+  const Vec3 centre_um = 0.5 * (low + high);
+  StretchBox box;
+  for (int axis = 0; axis < 3; ++axis) {
+    // Periodic: n nodes span n dx, so n = ceil(L / dx) leaves at least the margin.
+    const double length_um = extent_um[axis] + 2.0 * margin_um;
+    box.nodes[static_cast<std::size_t>(axis)] = static_cast<int>(std::ceil(length_um / dx_um));
+    box.origin_um[axis] =
+        centre_um[axis] - 0.5 * dx_um * (box.nodes[static_cast<std::size_t>(axis)] - 1);
+  }
+  return box;
+}
+
+StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const StretchCell& cell,
+                             const StretchSettings& settings, const StretchObserver& observer) {
+  const auto& fluid_settings = settings.fluid;
+  // Constructed in one place and run() called in one place (checkpointing wires in here).
+  const auto simulation = make_simulation(model, cell, fluid_settings);
+  // The tweezer forces are linear in F: those of 1 pN, scaled by the ramped force.
+  const auto unit_tweezers_pN = tweezer_forces_pN(model.vertex_count(), cell.patches, 1.0);
+  ForceRamp ramp;
+  // The total-curvature kinks smoothed as in the quasi-static mode (curvature_kinks.hpp): the
+  // same model, and no force that flips sign with a flat edge's angle from one step to the next.
+  const CurvatureKinks kinks(simulation->cell(0).model());
+  simulation->add_external_force([&](std::size_t, const coupling::Cell& state,
+                                     std::span<Vec3> forces_pN) {
+    const double force_pN = ramp.force_pN(simulation->time_s(), fluid_settings.force_ramp_time_s);
+    for (std::size_t v = 0; v < forces_pN.size(); ++v) {
+      forces_pN[v] += force_pN * unit_tweezers_pN[v];
+    }
+    kinks.smooth(state.positions_um(), state.membrane_forces(), forces_pN);
+  });
+  double max_speed_lu = 0.0;
+  simulation->add_observer({"stretch_speed", 1, [&max_speed_lu](const CoupledSimulation& s) {
+                              max_speed_lu =
+                                  std::max(max_speed_lu, largest_norm(s.cell(0).velocities_lu()));
+                            }});
+  auto stop = std::make_unique<ForceStop>(fluid_settings);
+  ForceStop& force_stop = *stop;
+  simulation->add_stop_criterion(std::move(stop));
+  const auto& units = simulation->units();
+  if (fluid_settings.snapshot_interval_s > 0.0 && !fluid_settings.output_directory.empty()) {
+    const double steps =
+        units.to_lattice(units::PhysicalUnit::time_s, fluid_settings.snapshot_interval_s);
+    coupling::add_vtk_output(*simulation, fluid_settings.output_directory,
+                             {static_cast<std::size_t>(std::max(1.0, std::round(steps))), 0});
+  }
+
+  StretchRun run;
+  for (const double force_pN : settings.forces_pN) {
+    ramp = {ramp.force_pN(simulation->time_s(), fluid_settings.force_ramp_time_s), force_pN,
+            simulation->time_s()};
+    max_speed_lu = 0.0;
+    force_stop.start(simulation->time_s());
+    const std::size_t start_step = simulation->time_step();
+    const std::size_t start_capped = simulation->capped_steps_per_cell().front();
+    const auto start = std::chrono::steady_clock::now();
+    StretchPoint point{.force_pN = force_pN};
+    try {
+      simulation->run();
+      point.converged = force_stop.steady();
+    } catch (const RuntimeFailure& failure) {
+      run.failure = "F = " + format_number(force_pN) + " pN: " + failure.what();
+    }
+    point.wall_time_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const auto positions_um = current_positions_um(*simulation);
+    measure_point(*simulation, positions_um, {start_step, start_capped, max_speed_lu}, point);
+    run.points.push_back(point);
+    if (observer) {
+      // After a membrane failure its forces are those of a shape at a force law's limit: none.
+      const auto& state = simulation->cell(0);
+      const auto tweezers_pN = tweezer_forces_pN(model.vertex_count(), cell.patches, force_pN);
+      observer({run.points.back(), positions_um, run.ok() ? &state.membrane_forces() : nullptr,
+                tweezers_pN});
+    }
+    if (!run.ok()) return run;
+  }
+  if (!fluid_settings.output_directory.empty()) {
+    coupling::write_fluid_snapshot(fluid_settings.output_directory / "fluid.vti", *simulation);
+  }
+  run.failure = not_steady(run.points, fluid_settings.max_time_per_force_s);
+  return run;
+}
+
+}  // namespace rbcsim::cases

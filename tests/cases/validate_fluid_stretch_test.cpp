@@ -1,0 +1,74 @@
+// Long physics check (label `validate`, not in the default suite): the fluid-coupled stretch at
+// the paper's resolution (N = 4, 2562 vertices, dx = 0.5 um), all six terms, the 13 forces of
+// Mills et al. (2004), one simulation. Asserts that every force reaches a steady state, that the
+// curve is monotonic and that it lies on the quasi-static equilibria (the same physics); prints
+// the curve, its distance from the measurements, steps and wall time. At plasma's viscosity (the
+// default) expect 0.6-1.2 M steps per force: hours per force (README "rbcsim stretch").
+#include <gtest/gtest.h>
+
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "cases/stretch_reference.hpp"
+#include "io/csv_table.hpp"
+#include "stretch_test_support.hpp"
+
+namespace {
+
+namespace cases = rbcsim::cases;
+
+TEST(ValidateFluidStretch, MillsCurveAtThePapersResolution) {
+  const auto reference = cases::stretch_reference_from(rbcsim::io::read_csv_file(
+      std::string(RBCSIM_SOURCE_DIR) + "/share/reference/mills2004_stretch.csv"));
+  const auto cell = cases::prepare_stretch_cell(cases::testing::shipped_discocyte(4), {});
+  const rbcsim::membrane::MembraneModel model(cell.mesh, rbcsim::membrane::MembraneParameters{});
+  cases::StretchSettings settings;
+  for (const auto& measured : reference) settings.forces_pN.push_back(measured.force_pN);
+  settings.mode = "fluid";
+
+  const auto start = std::chrono::steady_clock::now();
+  const auto fluid = cases::run_stretch(model, cell, settings, {});
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_TRUE(fluid.ok()) << fluid.failure;
+  settings.mode = "quasi-static";
+  const auto quasi_static = cases::run_stretch(model, cell, settings, {});
+  ASSERT_TRUE(quasi_static.ok()) << quasi_static.failure;
+
+  std::printf(
+      " force_pN  axial_um (quasi-static, Mills)  transverse_um (quasi-static, Mills)   steps"
+      "   max Mach  max Re\n");
+  std::size_t steps = 0;
+  for (std::size_t i = 0; i < fluid.points.size(); ++i) {
+    const auto& p = fluid.points[i];
+    const auto& q = quasi_static.points[i];
+    steps += p.steps;
+    std::printf(
+        "%9.3f  %7.3f (%7.3f, %6.3f)          %7.3f (%7.3f, %6.3f)           %7zu  %.2e  %.2e\n",
+        p.force_pN, p.axial_um, q.axial_um, reference[i].axial.mean_um, p.transverse_um,
+        q.transverse_um, reference[i].transverse.mean_um, p.steps, p.max_mach_number,
+        p.max_reynolds_number);
+    // The steady criterion stops short of the equilibrium by rate * D * tau_slow
+    // (fluid_stretch_test.cpp); over the level-2 curve this lag grew with the force to 0.41 um
+    // axial at 130 pN (0.19 um transverse): 0.5 um allowed.
+    EXPECT_NEAR(p.axial_um, q.axial_um, 0.5) << p.force_pN;
+    EXPECT_NEAR(p.transverse_um, q.transverse_um, 0.5) << p.force_pN;
+    EXPECT_LT(p.max_mach_number, 0.1) << p.force_pN;
+    if (i > 0) {
+      EXPECT_GT(p.axial_um, fluid.points[i - 1].axial_um);
+      EXPECT_LT(p.transverse_um, fluid.points[i - 1].transverse_um);
+    }
+  }
+  const auto comparison = cases::compare_with_reference(fluid.points, reference);
+  EXPECT_EQ(comparison.point_count, 13u);
+  std::printf(
+      "RMS vs Mills: axial %.3f um, transverse %.3f um; inside the error bars: %zu of 13 "
+      "(axial %zu, transverse %zu); %zu steps, wall time %.1f s on %d threads\n",
+      *comparison.rms_axial_um, *comparison.rms_transverse_um, comparison.inside_error_bars,
+      comparison.axial_inside_error_bar, comparison.transverse_inside_error_bar, steps, wall_s,
+      omp_get_max_threads());
+}
+
+}  // namespace
