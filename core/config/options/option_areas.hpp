@@ -17,12 +17,13 @@ void add_mesh_options(OptionTable& table);
 void add_output_options(OptionTable& table);
 void add_stability_options(OptionTable& table);
 void add_stretch_options(OptionTable& table);
+void add_capillary_options(OptionTable& table);
 
 using AddOptionArea = void (*)(OptionTable&);
-inline constexpr std::array<AddOptionArea, 9> kOptionAreas{
-    add_morphology_options, add_physics_options,   add_lattice_options,
-    add_ibm_options,        add_membrane_options,  add_mesh_options,
-    add_output_options,     add_stability_options, add_stretch_options,
+inline constexpr std::array<AddOptionArea, 10> kOptionAreas{
+    add_morphology_options, add_physics_options,   add_lattice_options, add_ibm_options,
+    add_membrane_options,   add_mesh_options,      add_output_options,  add_stability_options,
+    add_stretch_options,    add_capillary_options,
 };
 
 }  // namespace rbcsim::config
