@@ -163,7 +163,8 @@ void attach_capillary(CLI::App& application) {
   command
       ->add_option("--wall", options->wall_file,
                    "Wall surface (STL, fluid inside, lumen open along x) instead of the built-in "
-                   "capillary; then give capillary.inlet_velocity_m_per_s")
+                   "capillary; then give capillary.inlet_velocity_m_per_s and set "
+                   "capillary.wall_repulsion_pN_per_um2=0")
       ->type_name("FILE.stl");
   add_common_options(command, options->common);
   command->callback([options] { run_capillary_command(*options); });

@@ -86,6 +86,27 @@ mesh::TriangleMesh released_cell(const mesh::TriangleMesh& cell_mesh,
   return cell;
 }
 
+// The cell must start inside the lumen: every vertex's nearest node a fluid node of the lumen
+// slices. Checked before the fluid is settled, so that bad input fails at once (add_cell checks
+// again, with the solver's own mask).
+void require_cell_in_lumen(const mesh::TriangleMesh& cell, const CapillaryLattice& lattice) {
+  const auto& grid = lattice.grid_um;
+  for (std::size_t v = 0; v < cell.vertex_count(); ++v) {
+    const Vec3 node = ((cell.positions_um[v] - grid.origin_um) / grid.dx_um).array().round();
+    const bool in_lumen =
+        node.x() >= 1 && node.x() <= grid.nx - 2 && node.y() >= 0 && node.y() < grid.ny &&
+        node.z() >= 0 && node.z() < grid.nz &&
+        lattice.solid_mask[grid.index(static_cast<int>(node.x()), static_cast<int>(node.y()),
+                                      static_cast<int>(node.z()))] == geometry::kFluid;
+    if (!in_lumen) {
+      throw InputError("capillary.release_gap_um",
+                       "the released cell does not fit in the lumen (vertex " + std::to_string(v) +
+                           " at x = " + format_number(cell.positions_um[v].x()) +
+                           " um is in the wall)");
+    }
+  }
+}
+
 // The largest lattice velocity to expect: the Poiseuille peak (twice the mean) in the narrowest
 // slice, where the mean is the inlet's times the area ratio. Throws InputError beyond the Mach
 // limit of the unit converter.
@@ -251,6 +272,7 @@ CapillaryRun run_capillary(const mesh::TriangleMesh& cell_mesh, const CapillaryP
   const auto lattice = capillary_lattice(physics.wall, physics.units.dx_m() * 1e6);
   check_peak_velocity(lattice, physics.units, settings.mean_inlet_velocity_m_per_s);
   const auto cell = released_cell(cell_mesh, physics.wall, lattice, settings);
+  require_cell_in_lumen(cell, lattice);
   membrane::MembraneModel model(cell, physics.membrane);
 
   CapillaryRun run;

@@ -9,6 +9,8 @@
 #include "cases/capillary_flow.hpp"
 #include "common/errors.hpp"
 #include "geometry/capillary_wall.hpp"
+#include "geometry/stl_wall.hpp"
+#include "geometry/test_meshes.hpp"
 #include "geometry/tube_wall.hpp"
 #include "geometry/wall_measures.hpp"
 
@@ -130,6 +132,27 @@ TEST(CapillaryFlow, FlowRateIsConservedThroughTheThroat) {
   const auto [start_um, end_um] = narrow_section_um(capillary, flow.lattice, "capillary");
   EXPECT_DOUBLE_EQ(start_um, 8.0);
   EXPECT_DOUBLE_EQ(end_um, 16.0);
+}
+
+// An STL wall has no constriction parameters: its narrow section is measured on the lattice, the
+// slices below 98 % of the end slices' area. A tube of radius 6 um narrowed to 4 um between
+// x = 8 and 16 um (cosine): the measured section lies inside [8, 16] and covers most of it (the
+// first 2 % of area are lost within ~0.7 um of each end).
+TEST(CapillaryFlow, NarrowSectionOfAWallFileIsMeasuredOnTheLattice) {
+  auto mesh = geometry::test_meshes::capped_tube_mesh(6.0, 24.0, 48, 49);
+  for (auto& position : mesh.positions_um) {
+    const double s = (position.x() - 12.0) / 4.0;
+    if (std::abs(s) < 1.0)
+      position.tail<2>() *= 1.0 - (1.0 / 3.0) * (1.0 + std::cos(M_PI * s)) / 2.0;
+  }
+  const geometry::StlWall wall(mesh, {true, false, false});
+  const auto lattice = capillary_lattice(wall, 0.5);
+  const auto [start_um, end_um] = narrow_section_um(wall, lattice, "wall.stl");
+  EXPECT_GE(start_um, 8.0);
+  EXPECT_LT(start_um, 9.5);
+  EXPECT_LE(end_um, 16.0);
+  EXPECT_GT(end_um, 14.5);
+  EXPECT_NEAR(inlet_diameter_um(wall, lattice), 12.0, 0.5);
 }
 
 }  // namespace
