@@ -1,15 +1,9 @@
 #include "cases/stretch_output.hpp"
 
+#include "cases/json_values.hpp"
 #include "io/vtk_polydata.hpp"
 
 namespace rbcsim::cases {
-namespace {
-
-nlohmann::ordered_json optional_number(const std::optional<double>& value) {
-  return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
-}
-
-}  // namespace
 
 void write_stretch_shape(const std::filesystem::path& path,
                          std::span<const mesh::Triangle> triangles, const StretchState& state) {

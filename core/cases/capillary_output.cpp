@@ -1,0 +1,52 @@
+#include "cases/capillary_output.hpp"
+
+#include "cases/json_values.hpp"
+
+namespace rbcsim::cases {
+
+std::vector<std::string> capillary_table_columns() {
+  return {"time_s",        "centroid_x_um",      "centroid_y_um",
+          "centroid_z_um", "velocity_x_m_per_s", "deformation_index",
+          "length_x_um",   "length_y_um",        "length_z_um"};
+}
+
+std::vector<double> capillary_table_row(const CapillarySample& sample) {
+  return {sample.time_s,          sample.centroid_um.x(),    sample.centroid_um.y(),
+          sample.centroid_um.z(), sample.velocity_x_m_per_s, sample.deformation_index,
+          sample.extents_um.x(),  sample.extents_um.y(),     sample.extents_um.z()};
+}
+
+nlohmann::ordered_json capillary_result_section(const CapillaryDescription& description,
+                                                const CapillaryRun& run) {
+  const auto& numbers = run.numbers;
+  return {
+      {"geometry", description.geometry},
+      {"inflow", "velocity-inlet"},
+      {"cell_axis", description.cell_axis},
+      {"forces_terms", description.force_terms},
+      {"mean_inlet_velocity_m_per_s", numbers.mean_inlet_velocity_m_per_s},
+      {"inlet_diameter_um", numbers.inlet_diameter_um},
+      {"reynolds_number", numbers.reynolds_number},
+      {"shear_modulus_uN_per_m", numbers.shear_modulus_N_per_m * 1e6},
+      {"capillary_number", numbers.capillary_number},
+      {"narrow_section_start_um", run.narrow_start_um},
+      {"narrow_section_end_um", run.narrow_end_um},
+      {"passed", run.passed},
+      {"entry_time_s", optional_number(run.entry_time_s)},
+      {"exit_time_s", optional_number(run.exit_time_s)},
+      {"transit_time_s", optional_number(run.transit_time_s)},
+      {"initial_deformation_index", run.initial_deformation_index},
+      {"peak_deformation_index", run.peak_deformation_index},
+      {"peak_time_s", run.peak_time_s},
+      {"peak_centroid_x_um", run.peak_centroid_x_um},
+      {"final_deformation_index", run.final_deformation_index},
+      {"final_centroid_x_um", run.final_centroid_x_um},
+      {"simulated_time_s", run.time_s},
+      {"steps", run.steps},
+      {"fluid_settling_steps", run.fluid_settling_steps},
+      {"force_capped_steps", run.force_capped_steps},
+      {"stop_reason", run.stop_reason},
+  };
+}
+
+}  // namespace rbcsim::cases

@@ -1,0 +1,93 @@
+#include "cases/capillary_case.hpp"
+#include "config/options/option_areas.hpp"
+
+namespace rbcsim::config {
+namespace {
+
+// The defaults come from the case's settings struct: one source of truth.
+const cases::CapillarySettings kDefaults{};
+
+void add_wall_options(OptionTable& table) {
+  // The validation case by default: it is the paper's discocyte experiment (§3.3, Fig. 13), and
+  // the discocyte is the default morphology.
+  table.add_choice("capillary.geometry", {"paper-validation", "paper-morphology"},
+                   "paper-validation",
+                   "Built-in capillary: the paper's validation case (31.2 um long, 10.2 um across, "
+                   "6.75 um throat) or its three-morphology case (42 um, 10 um, 6.8 um).");
+  table.add_string("capillary.wall_file", "",
+                   "Wall surface (STL, fluid inside, lumen open along x) used instead of the "
+                   "built-in capillary; empty: the built-in one.");
+  table.add_choice("capillary.profile", {"cosine", "linear"}, "cosine",
+                   "Shape of the constriction of the built-in capillary (the paper gives none).");
+  table
+      .add_number("capillary.throat_diameter_um", "um", 0.0,
+                  "Throat diameter of the built-in capillary; 0: the paper's for the geometry.")
+      .at_least(0.0);
+  table
+      .add_number("capillary.constriction_length_um", "um", 0.0,
+                  "Length of the constriction of the built-in capillary, centred; 0: a third of "
+                  "the tube.")
+      .at_least(0.0);
+}
+
+void add_flow_options(OptionTable& table) {
+  table
+      .add_number("capillary.inlet_velocity_m_per_s", "m/s", kDefaults.mean_inlet_velocity_m_per_s,
+                  "Mean velocity over the inlet (Poiseuille profile); 0: the velocity giving the "
+                  "paper's Reynolds number for the geometry (0.0643 validation, 0.04 "
+                  "three-morphology) with physics.plasma_kinematic_viscosity_m2_per_s.")
+      .at_least(0.0);
+  table
+      .add_number("capillary.fluid_tolerance", "", kDefaults.fluid_tolerance,
+                  "The fluid alone is steady when its largest velocity change per check interval "
+                  "is below this fraction of its largest velocity.")
+      .above(0.0);
+  table
+      .add_integer("capillary.fluid_max_steps", "", static_cast<int>(kDefaults.fluid_max_steps),
+                   "Steps allowed for the fluid alone to become steady; more fails the run.")
+      .at_least(1);
+}
+
+void add_cell_options(OptionTable& table) {
+  table.add_choice("capillary.cell_axis", cases::cell_axis_names(), kDefaults.cell_axis,
+                   "Lab axis the cell mesh's z axis (a built-in shape's symmetry axis) is turned "
+                   "onto; z: a discocyte's disc lies in the x-y plane (DI = 1 at release).");
+  table
+      .add_number("capillary.release_gap_um", "um", kDefaults.release_gap_um,
+                  "Gap between the inlet plane and the cell's upstream end at release.")
+      .above(0.0);
+  table
+      .add_number("capillary.wall_repulsion_pN_per_um2", "pN/um^2",
+                  kDefaults.wall_repulsion_pN_per_um2,
+                  "Wall push on the membrane at contact, per membrane area (it stands in for the "
+                  "lubrication film the lattice cannot resolve); 0: none. Built-in capillaries "
+                  "only.")
+      .at_least(0.0);
+  table
+      .add_number("capillary.wall_repulsion_range_um", "um", kDefaults.wall_repulsion_range_um,
+                  "Distance from the wall within which the repulsion acts.")
+      .above(0.0);
+  table
+      .add_number("capillary.pass_margin_um", "um", kDefaults.pass_margin_um,
+                  "The cell has passed once its centroid is this far beyond the narrow section.")
+      .above(0.0);
+  table
+      .add_number("capillary.max_time_s", "s", kDefaults.max_time_s,
+                  "Simulated time allowed after release; a cell that has not passed by then "
+                  "fails the run.")
+      .above(0.0);
+  table
+      .add_number("capillary.sample_interval_s", "s", kDefaults.sample_interval_s,
+                  "Time between rows of capillary_timeseries.csv.")
+      .above(0.0);
+}
+
+}  // namespace
+
+void add_capillary_options(OptionTable& table) {
+  add_wall_options(table);
+  add_flow_options(table);
+  add_cell_options(table);
+}
+
+}  // namespace rbcsim::config

@@ -1,0 +1,89 @@
+#include "setup/capillary_from_config.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include "cases/capillary_observables.hpp"
+#include "common/errors.hpp"
+#include "geometry/wall_registry.hpp"
+#include "mesh/import.hpp"
+#include "setup/coupling_from_config.hpp"
+#include "setup/membrane_from_config.hpp"
+
+namespace rbcsim::setup {
+namespace {
+
+constexpr double kMetresPerMicrometre = 1e-6;
+
+mesh::TriangleMesh load_wall_mesh(const std::string& path) { return mesh::import_mesh(path).mesh; }
+
+nlohmann::json built_in_parameters(const config::Config& config) {
+  nlohmann::json parameters = {{"profile", config.string("capillary.profile")}};
+  for (const char* key : {"throat_diameter_um", "constriction_length_um"}) {
+    const double value = config.number(std::string("capillary.") + key);
+    if (value > 0.0) parameters[key] = value;
+  }
+  return parameters;
+}
+
+double paper_reynolds_number(const std::string& geometry) {
+  return geometry == "paper-morphology" ? kPaperMorphologyReynoldsNumber
+                                        : kPaperValidationReynoldsNumber;
+}
+
+}  // namespace
+
+CapillaryWall capillary_wall_from(const config::Config& config) {
+  const auto file = config.string("capillary.wall_file");
+  if (!file.empty()) {
+    const nlohmann::json parameters = {{"file", file}, {"open_axes", {"x"}}};
+    return {geometry::make_wall_shape("stl", parameters, "capillary.wall_file", load_wall_mesh),
+            file, file};
+  }
+  const auto geometry = config.string("capillary.geometry");
+  return {geometry::make_wall_shape(geometry, built_in_parameters(config), "capillary"), geometry,
+          "capillary.geometry"};
+}
+
+cases::CapillarySettings capillary_settings_from(const config::Config& config,
+                                                 const CapillaryWall& wall) {
+  cases::CapillarySettings settings;
+  settings.mean_inlet_velocity_m_per_s = config.number("capillary.inlet_velocity_m_per_s");
+  if (settings.mean_inlet_velocity_m_per_s == 0.0) {
+    const auto radius_um = wall.shape->radius_at_um(0.0);
+    if (!radius_um) {
+      throw InputError("capillary.inlet_velocity_m_per_s",
+                       "give the inlet velocity (the paper's Reynolds numbers are for its built-in "
+                       "capillaries only)");
+    }
+    settings.mean_inlet_velocity_m_per_s =
+        paper_reynolds_number(wall.geometry) *
+        config.number("physics.plasma_kinematic_viscosity_m2_per_s") /
+        (2.0 * *radius_um * kMetresPerMicrometre);
+  }
+  settings.cell_axis = config.string("capillary.cell_axis");
+  settings.release_gap_um = config.number("capillary.release_gap_um");
+  settings.pass_margin_um = config.number("capillary.pass_margin_um");
+  settings.wall_repulsion_pN_per_um2 = config.number("capillary.wall_repulsion_pN_per_um2");
+  settings.wall_repulsion_range_um = config.number("capillary.wall_repulsion_range_um");
+  settings.max_time_s = config.number("capillary.max_time_s");
+  settings.sample_interval_s = config.number("capillary.sample_interval_s");
+  settings.fluid_tolerance = config.number("capillary.fluid_tolerance");
+  settings.fluid_max_steps = static_cast<std::size_t>(config.integer("capillary.fluid_max_steps"));
+  return settings;
+}
+
+cases::CapillaryPhysics capillary_physics_from(const config::Config& config,
+                                               const CapillaryWall& wall,
+                                               const std::filesystem::path& run_directory) {
+  return {*wall.shape,
+          wall.source,
+          membrane_parameters_from(config),
+          fluid_parameters_from(config),
+          coupling_parameters_from(config, run_directory),
+          config::make_unit_converter(config),
+          config.number("physics.plasma_density_kg_per_m3"),
+          config.number("physics.plasma_kinematic_viscosity_m2_per_s"),
+          config.number("physics.thermal_energy_J")};
+}
+
+}  // namespace rbcsim::setup
