@@ -8,7 +8,7 @@
 //       endloop
 //     endfacet              (any number of facets)
 //   endsolid [name]
-// Keywords are matched case-insensitively; numbers are what strtod reads whole (nan and inf
+// Keywords are lower case (as assimp reads them); numbers are what strtod reads whole (nan and inf
 // included: import_mesh refuses those with its own message).
 #pragma once
 
