@@ -58,7 +58,8 @@ class ByteReader {
     const auto count = get<std::uint64_t>();
     if (count > bytes_.size() / sizeof(double)) fail("an array runs past the end");
     std::vector<double> values(count);
-    std::memcpy(values.data(), take(count * sizeof(double)).data(), count * sizeof(double));
+    const auto bytes = take(count * sizeof(double));
+    if (count > 0) std::memcpy(values.data(), bytes.data(), bytes.size());  // data() may be null
     return values;
   }
   bool at_end() const { return bytes_.empty(); }

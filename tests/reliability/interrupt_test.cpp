@@ -123,10 +123,10 @@ void expect_every_file_complete(const fs::path& run_dir) {
 TEST(Interrupt, SigintWritesTheResultsSoFarAndExits130) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
-  // The paper's cell through forces that take minutes: only the signal ends it in time.
-  const pid_t child = start_rbcsim(
-      {"stretch", "--forces", "0:200:1", "--threads", "1", "--output", run_dir.string()},
-      scratch.path());
+  // 401 forces on a 642-vertex cell take half a minute: the signal comes long before the end.
+  const pid_t child = start_rbcsim({"stretch", "--set", "mesh.subdivisions=3", "--forces",
+                                    "0:400:1", "--threads", "1", "--output", run_dir.string()},
+                                   scratch.path());
   ASSERT_TRUE(wait_for_file(run_dir / "shapes/stretch_000.vtp", std::chrono::seconds(60)));
   kill(child, SIGINT);
   int status = 0;
