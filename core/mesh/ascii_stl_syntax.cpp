@@ -46,13 +46,16 @@ class Tokens {
     if (!is_keyword(token, keyword)) fail(quoted(keyword), token);
   }
 
+  // On the keyword's line: assimp reads the numbers line by line, and leaked when they were split
+  // over two lines (found by fuzzing).
   void expect_numbers(int count, std::string_view after) {
+    const auto keyword_line = line_;
     for (int i = 0; i < count; ++i) {
       const std::string token(next());
       char* end = nullptr;
       std::strtod(token.c_str(), &end);
-      if (token.empty() || end != token.c_str() + token.size()) {
-        fail(std::to_string(count) + " numbers after " + quoted(after), token);
+      if (token.empty() || end != token.c_str() + token.size() || line_ != keyword_line) {
+        fail(std::to_string(count) + " numbers after " + quoted(after) + " on its line", token);
       }
     }
   }

@@ -4,7 +4,7 @@
 //   solid [name]
 //     facet normal nx ny nz
 //       outer loop
-//         vertex x y z      (three times)
+//         vertex x y z      (three times; the numbers on the keyword's line, as after normal)
 //       endloop
 //     endfacet              (any number of facets)
 //   endsolid [name]

@@ -36,4 +36,14 @@ TEST(FuzzRegression, AsciiStlKeywordInAnotherCase) {
             "line 11: expected 'vertex', got 'vertEx' (ASCII STL)");
 }
 
+// fuzz_stl_reader, leak-3237a08a: a vertex's numbers split over two lines; assimp reads them line
+// by line, threw, and leaked the same way.
+TEST(FuzzRegression, AsciiStlVertexSplitOverTwoLines) {
+  const std::string text =
+      "solid split\n facet normal 0 0 0\n  outer loop\n   vertex 1 0\n 0\n   vertex 0 1 0\n"
+      "   vertex 0 0 1\n  endloop\n endfacet\nendsolid split\n";
+  EXPECT_EQ(import_problem("split.stl", text),
+            "line 5: expected 3 numbers after 'vertex' on its line, got '0' (ASCII STL)");
+}
+
 }  // namespace
