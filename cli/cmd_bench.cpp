@@ -235,8 +235,9 @@ void print_coupled_rows(const Json& runs, std::size_t index, bool verbose) {
             }));
   if (!verbose) return;
   for (const auto& [phase, value] : first["phases_ms_per_step"].items()) {
-    print_row("    " + phase + " (ms)", per_run(runs, [&](const Json& run) {
-                return fixed(run["coupled"][index]["phases_ms_per_step"][phase].get<double>(), 3);
+    // Copied into the lambda: clang 14 (the fuzz build) cannot capture a structured binding.
+    print_row("    " + phase + " (ms)", per_run(runs, [&, name = phase](const Json& run) {
+                return fixed(run["coupled"][index]["phases_ms_per_step"][name].get<double>(), 3);
               }));
   }
 }

@@ -176,7 +176,9 @@ void run_stretch_command(const StretchOptions& options) {
       cases::compare_with_reference(run.points, setup::mills2004_stretch_reference());
   write_table(directory, run);
   io::write_pvd_collection(directory.path() / "stretch.pvd", recorder.entries());
-  auto result = directory.result_head(run.ok());
+  auto result = directory.result_head_with_status(run.interrupted ? "interrupted"
+                                                  : run.ok()      ? "ok"
+                                                                  : "failed");
   if (!run.ok()) result["failure"] = run.failure;
   result["headline"] = headline(run, comparison);
   result["files"] = {
@@ -193,6 +195,7 @@ void run_stretch_command(const StretchOptions& options) {
   } else if (!options.common.quiet) {
     print_table(result, run, comparison, directory, options.common.verbose);
   }
+  if (run.interrupted) throw Interrupted("stretch: " + run.failure);
   if (!run.ok()) throw RuntimeFailure("stretch: " + run.failure);
 }
 

@@ -1,7 +1,9 @@
 #include "common_options.hpp"
 
 #include <string>
+#include <utility>
 
+#include "common/errors.hpp"
 #include "config/option_table.hpp"
 
 namespace rbcsim::cli {
@@ -44,6 +46,49 @@ void add_common_options(CLI::App* command, CommonOptions& options) {
   command->add_flag("--json", options.json, "Print the machine-readable result on stdout");
   auto* quiet = command->add_flag("--quiet", options.quiet, "Print only errors");
   command->add_flag("--verbose", options.verbose, "Print more detail")->excludes(quiet);
+}
+
+CheckpointInterval parse_checkpoint_interval(std::string_view text) {
+  const auto fail = [&text]() -> CheckpointInterval {
+    throw InputError("--checkpoint-every", "\"" + std::string(text) +
+                                               "\": expected a number of steps (5000) or a "
+                                               "wall-clock time with s, m or h (90s, 10m, 2h)");
+  };
+  const std::string number(text.substr(0, text.find_first_not_of("0123456789.")));
+  const auto unit = text.substr(number.size());
+  if (number.empty() || number.find('.') != number.rfind('.')) return fail();
+  const double value = std::stod(number);
+  if (!(value > 0.0)) return fail();
+  if (unit.empty()) {
+    if (number.find('.') != std::string::npos) return fail();  // steps are whole
+    return {static_cast<std::size_t>(std::stoull(number)), 0.0};
+  }
+  for (const auto& [suffix, seconds] : {std::pair{"s", 1.0}, {"m", 60.0}, {"h", 3600.0}}) {
+    if (unit == suffix) return {0, value * seconds};
+  }
+  return fail();
+}
+
+void add_checkpoint_options(CLI::App* command, CheckpointOptions& options, CommonOptions& common) {
+  command
+      ->add_option("--checkpoint-every", options.every,
+                   "Write <run dir>/checkpoint.bin every N steps (5000) or wall-clock time (90s, "
+                   "10m, 2h); a checkpoint is also written when interrupted (Ctrl-C)")
+      ->type_name("N|TIME")
+      ->check([](const std::string& text) {
+        try {
+          parse_checkpoint_interval(text);
+          return std::string();
+        } catch (const InputError& error) {
+          return std::string(error.what());
+        }
+      });
+  command
+      ->add_option("--resume", options.resume_directory,
+                   "Continue the run in DIR from its checkpoint.bin (same config and options)")
+      ->type_name("DIR")
+      ->each([&common](const std::string& directory) { common.output_directory = directory; })
+      ->excludes(command->get_option("--output"));
 }
 
 config::Config resolve_config(const CommonOptions& options) {

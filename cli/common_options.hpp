@@ -5,7 +5,10 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <cstddef>
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "config/config.hpp"
 
@@ -19,6 +22,26 @@ struct CommonOptions {
   bool quiet = false;                      // --quiet
   bool verbose = false;                    // --verbose (excludes --quiet)
 };
+
+// --checkpoint-every and --resume, for the commands whose runs are long (the coupled ones):
+// add_checkpoint_options, then run_directory.hpp's wire_checkpoints once the simulation is built.
+struct CheckpointOptions {
+  std::string every;                       // --checkpoint-every; empty: only when interrupted
+  std::filesystem::path resume_directory;  // --resume; also the run's output directory
+};
+
+// How often: a whole number of steps, or wall-clock time with a unit (s, m, h).
+struct CheckpointInterval {
+  std::size_t steps = 0;
+  double wall_s = 0.0;
+};
+
+// "5000" -> 5000 steps; "90s", "10m", "2h" -> wall-clock seconds. InputError naming
+// --checkpoint-every otherwise.
+CheckpointInterval parse_checkpoint_interval(std::string_view text);
+
+// Adds both options; --resume DIR makes DIR the output directory (and excludes --output).
+void add_checkpoint_options(CLI::App* command, CheckpointOptions& options, CommonOptions& common);
 
 // Only the options that build the configuration, for commands that run nothing (config show).
 void add_config_options(CLI::App* command, config::ConfigRequest& request);

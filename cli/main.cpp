@@ -1,10 +1,12 @@
 // rbcsim: entry point. Maps failures onto exit codes (DESIGN.md §1):
-// 0 success, 1 runtime failure (instability, NaN), 2 bad input (usage, config, mesh).
+// 0 success, 1 runtime failure (instability, NaN), 2 bad input (usage, config, mesh), 130
+// interrupted by SIGINT or SIGTERM (the results so far written).
 #include <CLI/CLI.hpp>
 #include <iostream>
 
 #include "command_registry.hpp"
 #include "common/errors.hpp"
+#include "common/interrupt.hpp"
 
 int main(int argc, char** argv) {
   CLI::App application{
@@ -16,6 +18,7 @@ int main(int argc, char** argv) {
   application.require_subcommand(1);
   for (const auto& command : rbcsim::cli::registered_commands()) command.attach(application);
 
+  rbcsim::install_interrupt_handlers();
   try {
     application.parse(argc, argv);
   } catch (const CLI::Success& done) {  // --help, --version
@@ -29,6 +32,9 @@ int main(int argc, char** argv) {
   } catch (const rbcsim::RuntimeFailure& failure) {
     std::cerr << "rbcsim: failed: " << failure.what() << '\n';
     return rbcsim::kExitRuntimeFailure;
+  } catch (const rbcsim::Interrupted& interrupted) {
+    std::cerr << "rbcsim: stopped: " << interrupted.what() << '\n';
+    return rbcsim::kExitInterrupted;
   } catch (const std::exception& unexpected) {
     std::cerr << "rbcsim: internal error: " << unexpected.what() << '\n';
     return rbcsim::kExitRuntimeFailure;

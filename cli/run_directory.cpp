@@ -9,6 +9,7 @@
 #include <span>
 
 #include "common/errors.hpp"
+#include "coupling/checkpoint.hpp"
 #include "io/atomic_file.hpp"
 #include "io/sha256.hpp"
 
@@ -74,14 +75,31 @@ void RunDirectory::start(const config::Config& config, const setup::CellMesh& ce
 }
 
 nlohmann::ordered_json RunDirectory::result_head(bool ok) const {
-  return {{"command", command_},        {"version", RBCSIM_VERSION},
-          {"morphology", morphology_},  {"status", ok ? "ok" : "failed"},
-          {"wall_time_s", elapsed_s()}, {"threads", threads_}};
+  return result_head_with_status(ok ? "ok" : "failed");
+}
+
+nlohmann::ordered_json RunDirectory::result_head_with_status(std::string_view status) const {
+  return {{"command", command_}, {"version", RBCSIM_VERSION},  {"morphology", morphology_},
+          {"status", status},    {"wall_time_s", elapsed_s()}, {"threads", threads_}};
 }
 
 void RunDirectory::write_json(const std::string& file_name,
                               const nlohmann::ordered_json& content) const {
   io::write_text_atomically(path_ / file_name, content.dump(2) + "\n");
+}
+
+void wire_checkpoints(coupling::CoupledSimulation& simulation, const CheckpointOptions& options,
+                      const RunDirectory& directory, const config::Config& config) {
+  const auto interval =
+      options.every.empty() ? CheckpointInterval{} : parse_checkpoint_interval(options.every);
+  io::Sha256 fingerprint;
+  const auto tree = config.json().dump();
+  fingerprint.update(std::as_bytes(std::span(tree.data(), tree.size())));
+  simulation.set_checkpoint_policy({directory.path() / coupling::kCheckpointFileName,
+                                    fingerprint.hex_digest(), interval.steps, interval.wall_s});
+  if (!options.resume_directory.empty()) {
+    simulation.resume_from(options.resume_directory / coupling::kCheckpointFileName);
+  }
 }
 
 Progress::Progress(const CommonOptions& options)

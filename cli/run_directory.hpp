@@ -2,7 +2,8 @@
 // that `rbcsim report` reads:
 //   config.json  the resolved config with its "derived" values, plus a "run" object: command,
 //                version, mesh_source, mesh_sha256, threads, started_utc;
-//   result.json  command, version, morphology, status ("ok" | "failed"), wall_time_s, threads,
+//   result.json  command, version, morphology, status ("ok" | "failed" | "interrupted"),
+//   wall_time_s, threads,
 //                headline, files, and the command's own object (schemas/result.schema.json);
 //   CSV tables and ParaView files of the command.
 // Every file is written atomically (io/atomic_file.hpp).
@@ -12,9 +13,11 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 
 #include "common_options.hpp"
 #include "config/config.hpp"
+#include "coupling/coupled_simulation.hpp"
 #include "setup/cell_from_config.hpp"
 
 namespace rbcsim::cli {
@@ -38,6 +41,8 @@ class RunDirectory {
   void start(const config::Config& config, const setup::CellMesh& cell) const;
   // command, version, morphology, status, wall_time_s, threads: the head of result.json.
   nlohmann::ordered_json result_head(bool ok) const;
+  // The same with status "ok", "failed" or "interrupted" (by a signal, the results so far).
+  nlohmann::ordered_json result_head_with_status(std::string_view status) const;
   // <directory>/<file_name>, pretty-printed.
   void write_json(const std::string& file_name, const nlohmann::ordered_json& content) const;
 
@@ -49,6 +54,13 @@ class RunDirectory {
   std::string started_utc_;
   std::chrono::steady_clock::time_point started_;
 };
+
+// The checkpoints of a coupled run (coupling/checkpoint.hpp): sets the simulation's policy
+// (<run dir>/checkpoint.bin, the SHA-256 of the resolved config as fingerprint, the
+// --checkpoint-every interval) and, with --resume, loads the checkpoint of that directory (the run
+// directory itself). Call it after the cells, observers and stop criteria are added, before run().
+void wire_checkpoints(coupling::CoupledSimulation& simulation, const CheckpointOptions& options,
+                      const RunDirectory& directory, const config::Config& config);
 
 // Progress lines on stderr, only when stderr is a terminal and --quiet is not given (DESIGN.md
 // §1: results go to files and stdout, so pipelines never see progress).

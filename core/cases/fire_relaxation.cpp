@@ -7,6 +7,7 @@
 
 #include "cases/curvature_kinks.hpp"
 #include "common/errors.hpp"
+#include "common/interrupt.hpp"
 
 namespace rbcsim::cases {
 namespace {
@@ -134,6 +135,7 @@ membrane::RelaxationResult relax_membrane_fire(const membrane::MembraneModel& mo
   membrane::RelaxationResult result;
   bool stiffness_outdated = false;
   for (result.iterations = 0;; ++result.iterations) {
+    throw_if_interrupted();
     if (result.iterations % settings.stiffness_update_interval == 0 || stiffness_outdated) {
       stiffness_outdated = false;
       result.stiffest_mode_pN_per_um =

@@ -58,6 +58,10 @@ StretchRun run_quasi_static_stretch(const membrane::MembraneModel& model, const 
       }
     } catch (const RuntimeFailure& failure) {
       run.failure = at_force(force_pN) + failure.what();
+    } catch (const Interrupted& interrupted) {  // the unfinished force is not a point
+      run.failure = at_force(force_pN) + interrupted.what();
+      run.interrupted = true;
+      break;
     }
     point.wall_time_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

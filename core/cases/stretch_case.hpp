@@ -109,6 +109,7 @@ using StretchObserver = std::function<void(const StretchState&)>;
 struct StretchRun {
   std::vector<StretchPoint> points;  // one per force reached, the failed one included
   std::string failure;               // empty when every force converged; else why the run stopped
+  bool interrupted = false;          // by a signal (failure says which), between two points
   bool ok() const { return failure.empty(); }
 };
 
@@ -117,7 +118,8 @@ std::vector<std::string> stretch_mode_names();
 // Runs settings.forces_pN in order. A force that does not converge, a force cap that holds at
 // equilibrium, or a force law reaching its limit stops the run: the point is recorded (and
 // observed, so its shape can be inspected) and StretchRun::failure says why; nothing is
-// silently accepted. Throws InputError for an unknown mode or relaxation name.
+// silently accepted. An interrupt (common/interrupt.hpp) stops it likewise, with the points
+// reached so far. Throws InputError for an unknown mode or relaxation name.
 StretchRun run_stretch(const membrane::MembraneModel& model, const StretchCell& cell,
                        const StretchSettings& settings, const StretchObserver& observer);
 

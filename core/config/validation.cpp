@@ -235,4 +235,20 @@ std::optional<std::string> closest_known_path(std::string_view path) {
   return closest_match(path, known);
 }
 
+void require_cell_fits_domain(const std::array<double, 3>& cell_extent_um,
+                              const std::array<double, 3>& domain_extent_um, double spacing_um,
+                              std::string_view what) {
+  const double clearance_um = 2.0 * kCellClearanceSpacings * spacing_um;
+  for (std::size_t axis = 0; axis < 3; ++axis) {
+    if (cell_extent_um[axis] + clearance_um <= domain_extent_um[axis]) continue;
+    throw InputError(std::string(what),
+                     std::string("the cell does not fit the domain along ") + "xyz"[axis] + ": " +
+                         format_number(cell_extent_um[axis]) + " um of cell plus " +
+                         format_number(clearance_um) + " um of clearance (" +
+                         format_number(kCellClearanceSpacings) +
+                         " lattice spacings per side) exceed the domain's " +
+                         format_number(domain_extent_um[axis]) + " um");
+  }
+}
+
 }  // namespace rbcsim::config

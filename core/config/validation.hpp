@@ -3,6 +3,7 @@
 // number (kBT), got string \"seven\"".
 #pragma once
 
+#include <array>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -28,5 +29,17 @@ std::optional<std::string> closest_match(std::string_view word,
 // The option or group path most likely meant by an unknown `path`; besides typos it finds a
 // known key put in the wrong group ("k_bend_kBT" -> "membrane.k_bend_kBT").
 std::optional<std::string> closest_known_path(std::string_view path);
+
+// How many lattice spacings of fluid the immersed boundary needs between a cell and the domain's
+// boundary on each side: the widest delta kernel (phi4) reaches 2 nodes.
+inline constexpr double kCellClearanceSpacings = 2.0;
+
+// "Cell larger than the domain" (DESIGN.md §6), checked before a run is set up: along each axis,
+// the cell's extent plus kCellClearanceSpacings * spacing_um on both sides must fit in the
+// domain's extent (a capillary: its diameter across, a shear box: its height). Throws
+// InputError(what, ...) naming the axis and both sizes.
+void require_cell_fits_domain(const std::array<double, 3>& cell_extent_um,
+                              const std::array<double, 3>& domain_extent_um, double spacing_um,
+                              std::string_view what);
 
 }  // namespace rbcsim::config

@@ -66,4 +66,21 @@ void Cell::interpolate_and_advance(const ibm::GridView& grid,
   advancer_.advance(positions_lu_, velocities_lu_);
 }
 
+void Cell::save_state(StateArchive& archive, const std::string& prefix) const {
+  archive.put(prefix + "positions_lu", positions_lu_);
+  archive.put(prefix + "previous_positions_lu", previous_positions_lu_);
+  archive.put(prefix + "velocities_lu", velocities_lu_);
+  advancer_.save_state(archive, prefix);
+}
+
+void Cell::restore_state(StateArchive& archive, const std::string& prefix,
+                         const LatticeFrame& frame) {
+  archive.take(prefix + "positions_lu", positions_lu_);
+  archive.take(prefix + "previous_positions_lu", previous_positions_lu_);
+  archive.take(prefix + "velocities_lu", velocities_lu_);
+  advancer_.restore_state(archive, prefix, vertex_count());
+  // Where the next step computes the forces; until then, what positions_um() shows.
+  for (std::size_t v = 0; v < vertex_count(); ++v) positions_um_[v] = frame.to_um(positions_lu_[v]);
+}
+
 }  // namespace rbcsim::coupling

@@ -9,8 +9,10 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
+#include "common/state_archive.hpp"
 #include "common/vec3.hpp"
 #include "ibm/delta_kernels.hpp"
 #include "ibm/grid_view.hpp"
@@ -68,6 +70,12 @@ class Cell {
                      lattice::VectorField& force_density);
   // Phases 4-5: interpolates `velocity` with the same stencil, then moves the vertices (dt = 1).
   void interpolate_and_advance(const ibm::GridView& grid, const lattice::VectorField& velocity);
+
+  // Checkpoints, between steps: positions (current and previous), the latest velocities and the
+  // point-advance history, each array named `<prefix>...`. Forces are not saved: the next step
+  // computes them from the positions.
+  void save_state(StateArchive& archive, const std::string& prefix) const;
+  void restore_state(StateArchive& archive, const std::string& prefix, const LatticeFrame& frame);
 
  private:
   membrane::MembraneModel model_;

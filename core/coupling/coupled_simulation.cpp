@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "common/errors.hpp"
+#include "common/interrupt.hpp"
+#include "coupling/checkpoint.hpp"
 #include "coupling/snapshot.hpp"
 
 namespace rbcsim::coupling {
@@ -29,6 +31,12 @@ ibm::GridView grid_view_of(const lattice::FluidSolver& fluid) {
 }
 
 std::string cell_label(std::size_t cell) { return "cell " + std::to_string(cell); }
+
+// Names of the checkpoint arrays of a cell and of a stop criterion.
+std::string cell_prefix(std::size_t cell) { return cell_label(cell) + "."; }
+std::string criterion_prefix(std::size_t index) {
+  return "stop criterion " + std::to_string(index) + ".";
+}
 
 }  // namespace
 
@@ -202,18 +210,82 @@ RunSummary CoupledSimulation::run() {
   if (time_step_ == 0) observe_all();
   RunSummary summary;
   std::optional<std::string> reason;
+  auto last_checkpoint = Clock::now();
   while (!reason) {
+    if (interrupt_requested()) stop_interrupted();
     step();
     ++summary.steps;
     reason = stop_reason();
+    if (!reason) checkpoint_if_due(last_checkpoint);
   }
-  for (auto& registered : observers_) {
-    if (registered.last_observed_step != time_step_) notify(registered);
-  }
+  notify_observers_of_final_state();
   summary.time_s = time_s();
   summary.stop_reason = *reason;
   summary.capped_steps_per_cell = capped_steps_per_cell();
   return summary;
+}
+
+void CoupledSimulation::notify_observers_of_final_state() {
+  for (auto& registered : observers_) {
+    if (registered.last_observed_step != time_step_) notify(registered);
+  }
+}
+
+void CoupledSimulation::stop_interrupted() {
+  notify_observers_of_final_state();
+  write_checkpoint_now();
+  throw_if_interrupted();
+  throw std::logic_error("stop_interrupted without an interrupt");
+}
+
+void CoupledSimulation::checkpoint_if_due(Clock::time_point& last_checkpoint) const {
+  const auto& policy = checkpoint_policy_;
+  if (policy.file.empty()) return;
+  const bool steps_due = policy.every_steps > 0 && time_step_ % policy.every_steps == 0;
+  const bool time_due =
+      policy.every_wall_s > 0.0 &&
+      std::chrono::duration<double>(Clock::now() - last_checkpoint).count() >= policy.every_wall_s;
+  if (!steps_due && !time_due) return;
+  write_checkpoint_now();
+  last_checkpoint = Clock::now();
+}
+
+void CoupledSimulation::write_checkpoint_now() const {
+  if (!checkpoint_policy_.file.empty()) {
+    write_checkpoint(checkpoint_policy_.file, *this, checkpoint_policy_.config_fingerprint);
+  }
+}
+
+void CoupledSimulation::resume_from(const std::filesystem::path& checkpoint_file) {
+  read_checkpoint(checkpoint_file, *this, checkpoint_policy_.config_fingerprint);
+}
+
+void CoupledSimulation::save_state(StateArchive& archive) const {
+  if (forces_spread_) throw std::logic_error("save_state between spread_forces() and step()");
+  archive.put("simulation.time_step", {static_cast<double>(time_step_)});
+  fluid_->save_state(archive);
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    cells_[k].save_state(archive, cell_prefix(k));
+    force_cap_monitors_[k].save_state(archive, cell_prefix(k));
+  }
+  for (std::size_t i = 0; i < stop_criteria_.size(); ++i) {
+    stop_criteria_[i]->save_state(archive, criterion_prefix(i));
+  }
+}
+
+void CoupledSimulation::restore_state(StateArchive& archive) {
+  time_step_ = static_cast<std::size_t>(archive.take_number("simulation.time_step"));
+  fluid_->restore_state(archive);
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    cells_[k].restore_state(archive, cell_prefix(k), frame_);
+    force_cap_monitors_[k].restore_state(archive, cell_prefix(k));
+  }
+  for (std::size_t i = 0; i < stop_criteria_.size(); ++i) {
+    stop_criteria_[i]->restore_state(archive, criterion_prefix(i));
+  }
+  forces_spread_ = false;
+  // The state restored was observed by the run that saved it.
+  for (auto& registered : observers_) registered.last_observed_step = time_step_;
 }
 
 void CoupledSimulation::fail(std::optional<std::size_t> cell, const std::string& reason) const {

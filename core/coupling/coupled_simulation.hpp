@@ -14,6 +14,7 @@
 // RuntimeFailure("step N, cell K: reason; dump written to DIR") is thrown (exit code 1).
 #pragma once
 
+#include <chrono>
 #include <cstddef>
 #include <filesystem>
 #include <functional>
@@ -23,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "common/state_archive.hpp"
 #include "coupling/cell.hpp"
 #include "coupling/stability.hpp"
 #include "coupling/stop_criteria.hpp"
@@ -40,6 +42,16 @@ struct CouplingParameters {
   StabilityLimits stability;
   // Where failure dumps go (and what observers may write to); empty: no dump.
   std::filesystem::path run_directory;
+};
+
+// When run() writes a checkpoint (checkpoint.hpp) to `file`: every `every_steps` steps, every
+// `every_wall_s` seconds of wall-clock time (whichever comes first; 0 = not by that measure), and
+// when interrupted. An empty file: never.
+struct CheckpointPolicy {
+  std::filesystem::path file;
+  std::string config_fingerprint;  // of the run's resolved config; a resume must match it
+  std::size_t every_steps = 0;
+  double every_wall_s = 0.0;
 };
 
 class CoupledSimulation;
@@ -99,8 +111,22 @@ class CoupledSimulation {
   // next step() then uses instead of spreading again. For tests and diagnostics.
   void spread_forces();
   // Steps until a stop criterion holds (std::logic_error if there is none). Observers see the
-  // initial state (when no step was taken yet) and the final state.
+  // initial state (when no step was taken yet) and the final state. Checks the interrupt flag
+  // (common/interrupt.hpp) before every step: when set, the observers see the state reached, a
+  // checkpoint is written (if a policy is set) and Interrupted is thrown.
   RunSummary run();
+  // Checkpoints written by run() from now on.
+  void set_checkpoint_policy(CheckpointPolicy policy) { checkpoint_policy_ = std::move(policy); }
+  // Writes a checkpoint now, if the policy names a file.
+  void write_checkpoint_now() const;
+  // Continues from a checkpoint written by a simulation built the same way (read_checkpoint).
+  void resume_from(const std::filesystem::path& checkpoint_file);
+
+  // The complete state between two steps (checkpoint.hpp): step count, fluid, cells with their
+  // point-advance history, force-cap monitors, stop criteria. restore_state throws InputError
+  // naming the archive for arrays that do not fit this simulation.
+  void save_state(StateArchive& archive) const;
+  void restore_state(StateArchive& archive);
   // Calls every observer now (for instance for the initial state).
   void observe_all();
 
@@ -128,7 +154,12 @@ class CoupledSimulation {
   void check_cells();
   void notify_due_observers();
   void notify(RegisteredObserver& registered);
+  void notify_observers_of_final_state();
   std::optional<std::string> stop_reason();
+  // Writes a checkpoint if the policy says one is due after this step.
+  void checkpoint_if_due(std::chrono::steady_clock::time_point& last_checkpoint) const;
+  // The observers see the state reached, a checkpoint is written, Interrupted thrown.
+  [[noreturn]] void stop_interrupted();
   // Writes the failure dump (if there is a run directory) and throws RuntimeFailure.
   [[noreturn]] void fail(std::optional<std::size_t> cell, const std::string& reason) const;
 
@@ -148,6 +179,7 @@ class CoupledSimulation {
   bool forces_spread_ = false;
   std::size_t time_step_ = 0;
   StepPhaseTimes phase_times_;
+  CheckpointPolicy checkpoint_policy_;
 };
 
 }  // namespace rbcsim::coupling

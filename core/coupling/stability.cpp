@@ -76,4 +76,15 @@ std::optional<std::string> ForceCapMonitor::record(std::size_t capped_vertices,
          " consecutive steps (stability.force_cap_max_steps): the membrane is overstretched";
 }
 
+void ForceCapMonitor::save_state(StateArchive& archive, const std::string& prefix) const {
+  archive.put(prefix + "force_cap_steps", {static_cast<double>(consecutive_capped_steps_),
+                                           static_cast<double>(steps_with_capping_)});
+}
+
+void ForceCapMonitor::restore_state(StateArchive& archive, const std::string& prefix) {
+  const auto steps = archive.take(prefix + "force_cap_steps", 2);
+  consecutive_capped_steps_ = static_cast<std::size_t>(steps[0]);
+  steps_with_capping_ = static_cast<std::size_t>(steps[1]);
+}
+
 }  // namespace rbcsim::coupling

@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 
+#include "common/state_archive.hpp"
 #include "common/vec3.hpp"
 #include "ibm/grid_view.hpp"
 
@@ -48,6 +49,10 @@ class ForceCapMonitor {
   // Steps so far in which the cap clamped at least one vertex (reported after a run: the cap is
   // a safety net, never silent physics).
   std::size_t steps_with_capping() const { return steps_with_capping_; }
+
+  // Checkpoints: both counts as `<prefix>force_cap_steps`.
+  void save_state(StateArchive& archive, const std::string& prefix) const;
+  void restore_state(StateArchive& archive, const std::string& prefix);
 
  private:
   std::size_t consecutive_capped_steps_ = 0;

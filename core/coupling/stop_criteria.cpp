@@ -1,8 +1,11 @@
 #include "coupling/stop_criteria.hpp"
 
 #include <cmath>
+#include <span>
 #include <stdexcept>
+#include <vector>
 
+#include "common/errors.hpp"
 #include "common/format.hpp"
 #include "coupling/coupled_simulation.hpp"
 
@@ -35,6 +38,12 @@ class DistanceLimit final : public StopCriterion {
     return "cell " + std::to_string(cell_index_) + " travelled " + format_number(distance_um_) +
            " um";
   }
+  void save_state(StateArchive& archive, const std::string& prefix) const override {
+    archive.put(prefix + "start_lu", std::span<const Vec3>(&start_lu_, 1));
+  }
+  void restore_state(StateArchive& archive, const std::string& prefix) override {
+    archive.take(prefix + "start_lu", std::span<Vec3>(&start_lu_, 1));
+  }
 
  private:
   std::size_t cell_index_;
@@ -66,6 +75,22 @@ class SteadyState final : public StopCriterion {
     return "steady state of " + name_ + " (" + format_number(value) + "; relative change below " +
            format_number(tolerance_.relative_rate_per_s) + " per s over " +
            std::to_string(steady_checks_) + " checks)";
+  }
+  // last_check_s, last_value, steady_checks; no check yet: an empty array.
+  void save_state(StateArchive& archive, const std::string& prefix) const override {
+    archive.put(prefix + "steady_state",
+                last_check_s_ ? std::vector<double>{*last_check_s_, last_value_,
+                                                    static_cast<double>(steady_checks_)}
+                              : std::vector<double>{});
+  }
+  void restore_state(StateArchive& archive, const std::string& prefix) override {
+    const auto saved = archive.take(prefix + "steady_state", std::nullopt);
+    if (saved.empty()) return;
+    if (saved.size() != 3)
+      throw InputError(archive.source(), prefix + "steady_state: not 3 values");
+    last_check_s_ = saved[0];
+    last_value_ = saved[1];
+    steady_checks_ = static_cast<int>(saved[2]);
   }
 
  private:

@@ -9,6 +9,8 @@
 #include <optional>
 #include <string>
 
+#include "common/state_archive.hpp"
+
 namespace rbcsim::coupling {
 
 class CoupledSimulation;
@@ -18,6 +20,11 @@ class StopCriterion {
   virtual ~StopCriterion() = default;
   // Called after every step: why the run should stop now, or nothing.
   virtual std::optional<std::string> check(const CoupledSimulation& simulation) = 0;
+  // Checkpoints: a criterion that remembers something (where a cell started, the last values of
+  // an observable) saves it as arrays named `<prefix>...`, so a resumed run stops where the
+  // uninterrupted one would.
+  virtual void save_state(StateArchive& /*archive*/, const std::string& /*prefix*/) const {}
+  virtual void restore_state(StateArchive& /*archive*/, const std::string& /*prefix*/) {}
 };
 
 // Stops once the simulated time reaches time_s (the step that reaches it is the last).

@@ -68,4 +68,19 @@ void PointAdvancer::advance(std::span<Vec3> positions_lu, std::span<const Vec3> 
   has_history_ = true;
 }
 
+void PointAdvancer::save_state(StateArchive& archive, const std::string& prefix) const {
+  archive.put(prefix + "advance.previous_dt", {has_history_ ? previous_dt_ : -1.0});
+  archive.put(prefix + "advance.previous_velocities",
+              has_history_ ? std::span<const Vec3>(previous_velocities_) : std::span<const Vec3>());
+}
+
+void PointAdvancer::restore_state(StateArchive& archive, const std::string& prefix,
+                                  std::size_t point_count) {
+  const double previous_dt = archive.take_number(prefix + "advance.previous_dt");
+  has_history_ = previous_dt >= 0.0;
+  previous_dt_ = has_history_ ? previous_dt : 0.0;
+  previous_velocities_.resize(has_history_ ? point_count : 0);
+  archive.take(prefix + "advance.previous_velocities", previous_velocities_);
+}
+
 }  // namespace rbcsim::ibm

@@ -4,9 +4,11 @@
 #pragma once
 
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
+#include "common/state_archive.hpp"
 #include "common/vec3.hpp"
 
 namespace rbcsim::ibm {
@@ -44,6 +46,12 @@ class PointAdvancer {
   void forget_history() { has_history_ = false; }
 
   const PointAdvanceScheme& scheme() const { return *scheme_; }
+
+  // The history (checkpoints): `<prefix>advance.previous_dt` (-1 without history) and
+  // `<prefix>advance.previous_velocities`. restore_state throws InputError for a history of
+  // another size than point_count.
+  void save_state(StateArchive& archive, const std::string& prefix) const;
+  void restore_state(StateArchive& archive, const std::string& prefix, std::size_t point_count);
 
  private:
   const PointAdvanceScheme* scheme_;

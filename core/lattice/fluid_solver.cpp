@@ -289,4 +289,30 @@ std::vector<double> FluidSolver::pre_collision_populations() const {
   return lattice::pre_collision_populations(setup_, arrays_, time_);
 }
 
+namespace {
+
+std::string velocity_array_name(int axis) { return std::string("fluid.velocity_") + "xyz"[axis]; }
+
+}  // namespace
+
+void FluidSolver::save_state(StateArchive& archive) const {
+  archive.put("fluid.populations", pre_collision_populations());
+  archive.put("fluid.density", arrays_.density);
+  for (int axis = 0; axis < 3; ++axis) {
+    archive.put(velocity_array_name(axis), arrays_.velocity[axis]);
+  }
+  archive.put("fluid.time", {static_cast<double>(time_)});
+}
+
+void FluidSolver::restore_state(StateArchive& archive) {
+  const std::size_t node_count = grid().node_count();
+  arrays_.populations = archive.take("fluid.populations", kDirections * node_count);
+  arrays_.layout = PopulationLayout::natural;
+  arrays_.density = archive.take("fluid.density", node_count);
+  for (int axis = 0; axis < 3; ++axis) {
+    arrays_.velocity[axis] = archive.take(velocity_array_name(axis), node_count);
+  }
+  time_ = static_cast<std::size_t>(archive.take_number("fluid.time"));
+}
+
 }  // namespace rbcsim::lattice

@@ -27,6 +27,7 @@
 // not conserve mass exactly (see tests/lattice/curved_wall_test.cpp for the measured drift).
 #pragma once
 
+#include "common/state_archive.hpp"
 #include "lattice/collision.hpp"
 #include "lattice/fluid_kernel.hpp"
 #include "lattice/wall_link.hpp"
@@ -129,6 +130,13 @@ class FluidSolver {
   double total_mass() const;
   // Pre-collision populations in natural layout, whatever the kernel's current layout.
   std::vector<double> pre_collision_populations() const;
+
+  // Checkpoints (common/state_archive.hpp): the populations in natural layout, the density and
+  // velocity of the latest collision, and the step count (the Lees-Edwards offset follows it).
+  // The geometry is not saved: restore into a solver set up the same way. restore_state throws
+  // InputError (naming the archive) when an array's size does not fit this grid.
+  void save_state(StateArchive& archive) const;
+  void restore_state(StateArchive& archive);
 
  private:
   void require_geometry_editable() const;

@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "common/interrupt.hpp"
+
 namespace rbcsim::membrane {
 namespace {
 
@@ -96,6 +98,7 @@ RelaxationResult relax_membrane(const MembraneModel& model, std::span<Vec3> posi
   auto forces = model.make_forces();
   RelaxationResult result;
   for (result.iterations = 0;; ++result.iterations) {
+    throw_if_interrupted();
     if (result.iterations % settings.stiffness_update_interval == 0) {
       result.stiffest_mode_pN_per_um = estimate_stiffest_mode_pN_per_um(model, positions_um);
       result.time_step_s = settings.step_fraction /

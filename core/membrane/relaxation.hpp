@@ -41,7 +41,8 @@ struct RelaxationResult {
 };
 
 // Moves positions_um (one per vertex) in place. external_forces_pN is empty or one per vertex.
-// Throws RuntimeFailure when a term reaches its singular limit or a force is not finite.
+// Throws RuntimeFailure when a term reaches its singular limit or a force is not finite, and
+// Interrupted when a signal arrived (checked every iteration).
 RelaxationResult relax_membrane(const MembraneModel& model, std::span<Vec3> positions_um,
                                 std::span<const Vec3> external_forces_pN,
                                 const RelaxationSettings& settings);

@@ -6,12 +6,19 @@
 #include <algorithm>
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
 #include <map>
 #include <numeric>
 #include <set>
 #include <unordered_map>
 
+#include <unistd.h>
+
 #include "common/errors.hpp"
+#include "io/text_file.hpp"
+#include "mesh/ascii_stl_syntax.hpp"
 #include "mesh/geometry.hpp"
 #include "mesh/inspection.hpp"
 #include "mesh/transform.hpp"
@@ -45,10 +52,98 @@ void collect_node(const aiScene& scene, const aiNode& node, const aiMatrix4x4& p
   }
 }
 
-TriangleMesh read_with_assimp(const std::filesystem::path& path) {
+constexpr std::uintmax_t kBinaryStlHeaderBytes = 84;  // 80-byte header + uint32 count
+constexpr std::uintmax_t kBinaryStlTriangleBytes = 50;
+
+bool has_stl_extension(const std::filesystem::path& path) {
+  auto extension = path.extension().string();
+  for (auto& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".stl";
+}
+
+// The first 84 bytes (fewer if the file is shorter).
+std::string read_head(const std::filesystem::path& path) {
+  std::ifstream stream(path, std::ios::binary);
+  std::string head(kBinaryStlHeaderBytes, '\0');
+  stream.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(stream.gcount()));
+  return head;
+}
+
+std::string megabytes(double bytes) { return std::to_string(std::llround(bytes / 1e6)) + " MB"; }
+
+// How many triangles the file can hold at most: a binary STL's header count (checked against the
+// file size, which must be exactly 84 + 50 n), else what a text format fits in its size. An ASCII
+// STL starts with "solid"; a binary STL that starts so anyway is recognised by its exact size.
+struct TriangleBound {
+  std::uintmax_t count;
+  bool exact;  // a binary STL's count; else an upper bound
+};
+
+TriangleBound triangle_bound(const std::filesystem::path& path, std::uintmax_t file_bytes) {
+  const std::string name = path.string();
+  const TriangleBound text_bound{file_bytes / kMinTextBytesPerTriangle, false};
+  if (!has_stl_extension(path)) return text_bound;
+  const auto head = read_head(path);
+  const bool says_ascii = head.rfind("solid", 0) == 0;
+  if (head.size() < kBinaryStlHeaderBytes) {
+    if (says_ascii) return text_bound;
+    throw InputError(name, "neither an ASCII STL (no 'solid' line) nor a binary STL (" +
+                               std::to_string(file_bytes) + " bytes, at least 84 expected)");
+  }
+  std::uint32_t declared = 0;
+  std::memcpy(&declared, head.data() + 80, sizeof declared);
+  const auto expected_bytes = kBinaryStlHeaderBytes + kBinaryStlTriangleBytes * declared;
+  if (expected_bytes == file_bytes) return {declared, true};
+  if (says_ascii) return text_bound;
+  throw InputError(name, std::string(file_bytes < expected_bytes ? "truncated " : "") +
+                             "binary STL: the header declares " + std::to_string(declared) +
+                             " triangles (" + std::to_string(expected_bytes) +
+                             " bytes) but the file has " + std::to_string(file_bytes) + " bytes");
+}
+
+void check_triangle_limit(const std::string& name, std::uintmax_t triangles,
+                          std::size_t max_triangles) {
+  if (triangles > max_triangles) {
+    throw InputError(name, std::to_string(triangles) + " triangles, more than the limit of " +
+                               std::to_string(max_triangles) + " (mesh.max_triangles)");
+  }
+}
+
+double available_memory_bytes() {
+  return static_cast<double>(sysconf(_SC_AVPHYS_PAGES)) *
+         static_cast<double>(sysconf(_SC_PAGESIZE));
+}
+
+// Refuses, before anything is allocated, a file that could not be read in the memory there is or
+// that holds more triangles than allowed.
+TriangleBound check_size(const std::filesystem::path& path, std::uintmax_t file_bytes,
+                         std::size_t max_triangles) {
+  const std::string name = path.string();
+  const auto [triangles, exact] = triangle_bound(path, file_bytes);
+  const double needed_bytes =
+      static_cast<double>(triangles) * static_cast<double>(kImportBytesPerTriangle);
+  const double available_bytes = available_memory_bytes();
+  if (needed_bytes > available_bytes) {
+    throw InputError(name, "too large: up to " + std::to_string(triangles) +
+                               " triangles would need about " + megabytes(needed_bytes) +
+                               " to read, more than the " + megabytes(available_bytes) +
+                               " of available memory");
+  }
+  // A binary STL's count is exact (a text file's bound is not): checked before reading too.
+  if (exact) check_triangle_limit(name, triangles, max_triangles);
+  return {triangles, exact};
+}
+
+TriangleMesh read_with_assimp(const std::filesystem::path& path, std::size_t max_triangles) {
   const std::string name = path.string();
   if (!std::filesystem::is_regular_file(path)) throw InputError(name, "no such file");
-  if (std::filesystem::file_size(path) == 0) throw InputError(name, "empty file");
+  const auto file_bytes = std::filesystem::file_size(path);
+  if (file_bytes == 0) throw InputError(name, "empty file");
+  const auto bound = check_size(path, file_bytes, max_triangles);
+  if (has_stl_extension(path) && !bound.exact) {
+    check_ascii_stl_syntax(io::read_text_file(path), name);
+  }
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(name, aiProcess_Triangulate);
   if (scene == nullptr || scene->mRootNode == nullptr) {
@@ -57,6 +152,7 @@ TriangleMesh read_with_assimp(const std::filesystem::path& path) {
   TriangleMesh soup;
   collect_node(*scene, *scene->mRootNode, aiMatrix4x4(), soup);
   if (soup.triangles.empty()) throw InputError(name, "contains no triangles");
+  check_triangle_limit(name, soup.triangle_count(), max_triangles);
   return soup;
 }
 
@@ -233,7 +329,7 @@ void apply_options(TriangleMesh& mesh, const ImportOptions& options, const std::
 
 ImportedMesh import_mesh(const std::filesystem::path& path, const ImportOptions& options) {
   const std::string name = path.string();
-  const auto soup = read_with_assimp(path);
+  const auto soup = read_with_assimp(path, options.max_triangles);
   check_finite(soup, name);
   ImportedMesh imported;
   imported.mesh = weld_exact(soup);

@@ -54,7 +54,9 @@ mesh::CellShapeParameters cell_shape_parameters_from(const config::Config& confi
 CellMesh cell_mesh_from(const config::Config& config) {
   const auto file = config.string("mesh.file");
   if (!file.empty()) {
-    auto imported = mesh::import_mesh(file);
+    mesh::ImportOptions options;
+    options.max_triangles = static_cast<std::size_t>(config.integer("mesh.max_triangles"));
+    auto imported = mesh::import_mesh(file, options);
     return {std::move(imported.mesh), file, std::move(imported.notices)};
   }
   const auto shape = config.string("morphology");

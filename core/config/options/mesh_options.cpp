@@ -1,5 +1,6 @@
 #include "config/options/option_areas.hpp"
 #include "mesh/cell_shapes.hpp"
+#include "mesh/import.hpp"
 
 namespace rbcsim::config {
 namespace {
@@ -80,6 +81,11 @@ void add_mesh_options(OptionTable& table) {
                    "Icosphere subdivision level of the built-in shape (4: 2562 vertices).")
       .at_least(1)
       .at_most(6);
+  table
+      .add_integer("mesh.max_triangles", "", static_cast<int>(mesh::kDefaultMaxTriangles),
+                   "Largest mesh.file accepted, in triangles; a larger file is refused before it "
+                   "is read.")
+      .at_least(4);
   add_discocyte_options(table);
   add_stomatocyte_options(table);
   add_echinocyte_options(table);

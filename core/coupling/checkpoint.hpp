@@ -1,0 +1,40 @@
+// Checkpoint files of a coupled simulation (DESIGN.md §6: long runs checkpoint and resume).
+//
+// Layout (little-endian, as in memory on the machines rbcsim runs on):
+//   "RBCSIMCK"                       8 bytes, the magic
+//   uint32 version (kCheckpointVersion)
+//   uint32 n, n bytes                 the config fingerprint of the run that wrote it
+//   uint32 array count, then per array (in name order):
+//     uint32 n, n bytes name;  uint64 count;  count float64 values
+//   64 bytes                          SHA-256 of everything above, hex digits
+// The arrays are CoupledSimulation::save_state's (common/state_archive.hpp): fluid populations in
+// natural layout, density, velocity, step counts, every cell's positions and point-advance
+// history, the force-cap monitors and the stop criteria's memory. Written atomically
+// (io/atomic_file.hpp); a kill during the write leaves the previous checkpoint intact.
+//
+// Reading refuses (InputError, exit 2, one line naming the file) a file that is not a
+// checkpoint, of another version, truncated or corrupted (checksum), written under another
+// config (fingerprint), or whose arrays do not fit the simulation it is loaded into.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace rbcsim::coupling {
+
+class CoupledSimulation;
+
+inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr const char* kCheckpointFileName = "checkpoint.bin";
+
+void write_checkpoint(const std::filesystem::path& file, const CoupledSimulation& simulation,
+                      std::string_view config_fingerprint);
+
+// Loads `file` into `simulation`, built from the same config with the same cells, observers and
+// stop criteria, before its first step.
+void read_checkpoint(const std::filesystem::path& file, CoupledSimulation& simulation,
+                     std::string_view config_fingerprint);
+
+}  // namespace rbcsim::coupling
