@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Installs what rbcsim needs to build on Debian, if missing, and builds it.
 #   scripts/setup.sh [BUILD_DIR] [extra cmake arguments...]
+# RBCSIM_EXTRA_PACKAGES (space-separated) adds Debian packages a caller needs beyond the build's,
+# e.g. scripts/test.sh's clang for the fuzz targets.
 # Idempotent: installed packages are not touched, an existing build directory is reused.
 # As root it runs apt-get itself; otherwise it prints the exact command to run and exits 2.
 set -euo pipefail
@@ -13,6 +15,8 @@ shift || true
 # with strict XML parsers.
 required_packages=(cmake make g++ libcli11-dev libeigen3-dev nlohmann-json3-dev libassimp-dev
                    libgtest-dev libexpat1-dev libxml2-dev)
+read -r -a extra_packages <<<"${RBCSIM_EXTRA_PACKAGES:-}"
+required_packages+=("${extra_packages[@]}")
 
 missing_packages=()
 for package in "${required_packages[@]}"; do

@@ -4,6 +4,8 @@
 set -euo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 jobs="$(nproc)"
+# clang with libFuzzer and its OpenMP runtime, for the fuzz stage at the end.
+export RBCSIM_EXTRA_PACKAGES="clang-14 libclang-rt-14-dev libomp-14-dev"
 
 echo "== release build (warnings are errors) and tests" >&2
 "$repo_root/scripts/setup.sh" "$repo_root/build" -DRBCSIM_WARNINGS_AS_ERRORS=ON
@@ -15,3 +17,29 @@ echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests" >&2
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DRBCSIM_WARNINGS_AS_ERRORS=ON -DRBCSIM_SANITIZE=ON
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$repo_root/build-sanitize" --output-on-failure --parallel "$jobs" -LE validate
+
+echo "== fuzzing the STL reader and the config parser (libFuzzer + ASan + UBSan, bounded)" >&2
+# Only the two fuzz targets and the libraries they link are built. A crash fails this script and
+# leaves the input in build-fuzz/ (it then becomes a regression test in tests/reliability).
+fuzz_seconds="${RBCSIM_FUZZ_SECONDS:-30}"
+cmake -S "$repo_root" -B "$repo_root/build-fuzz" -DCMAKE_CXX_COMPILER=clang++-14 -DRBCSIM_FUZZ=ON \
+  -DRBCSIM_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" >/dev/null
+cmake --build "$repo_root/build-fuzz" --parallel "$jobs" --target fuzz_stl_reader fuzz_config_parser
+stl_corpus="$(mktemp -d)"
+config_corpus="$(mktemp -d)"
+trap 'rm -rf "$stl_corpus" "$config_corpus"' EXIT
+"$repo_root/build/cli/rbcsim" mesh generate --subdivisions 1 -o "$stl_corpus/icosphere.stl" >/dev/null
+# Prints the fuzzer's last lines (runs, coverage); all of its output if it found something.
+run_fuzzer() {
+  local log="$repo_root/build-fuzz/$1.log"
+  if "$repo_root/build-fuzz/tests/fuzz/$1" -max_total_time="$fuzz_seconds" -rss_limit_mb=4096 \
+    -artifact_prefix="$repo_root/build-fuzz/" "${@:2}" >"$log" 2>&1; then
+    tail -n 2 "$log"
+  else
+    cat "$log"
+    return 1
+  fi
+}
+run_fuzzer fuzz_stl_reader -max_len=8192 "$stl_corpus" "$repo_root/tests/fuzz/seeds/stl"
+run_fuzzer fuzz_config_parser "$config_corpus" "$repo_root/share/config"
