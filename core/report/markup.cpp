@@ -78,9 +78,10 @@ struct UnitSuffix {
   std::string_view unit;
 };
 
-// Longer suffixes first: "_m_per_s" must win over "_per_s" and "_s".
-constexpr std::array<UnitSuffix, 15> kUnitSuffixes{{
+// Longer suffixes first: "_m_per_s" and "_m2_per_s" must win over "_per_s" and "_s".
+constexpr std::array<UnitSuffix, 16> kUnitSuffixes{{
     {"_uN_per_m", "µN/m"},
+    {"_m2_per_s", "m²/s"},
     {"_m_per_s", "m/s"},
     {"_per_s", "1/s"},
     {"_kBT", "kBT"},

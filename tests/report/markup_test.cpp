@@ -63,6 +63,7 @@ TEST(DescribeKey, ReadsTheUnitSuffix) {
       {"wall_time_s", "wall_time", "s"},
       {"E_s_uN_per_m", "E_s", "µN/m"},
       {"velocity_x_m_per_s", "velocity_x", "m/s"},
+      {"kinematic_viscosity_m2_per_s", "kinematic_viscosity", "m²/s"},
       {"shear_rate_per_s", "shear_rate", "1/s"},
       {"k_link_kBT", "k_link", "kBT"},
       {"force_pN", "force", "pN"},
