@@ -1,10 +1,18 @@
 #!/usr/bin/env bash
 # The README's main command: set up (install missing packages, build), then run the main job on the
-# embedded defaults and leave its results in out/ (or the directory given as the first argument).
-# Today the main job builds and inspects the three cell morphologies at the paper's resolution,
-# prints the resolved configuration, and stretches the discocyte as the paper's Fig. 8 does (with
-# and without the area-difference and total-curvature terms), then reports on both stretch runs;
-# the other experiments (shear, capillary) join it as they land.
+# embedded defaults — the paper in small — and leave its results in out/ (or the directory given as
+# the first argument):
+#   1. the three cell morphologies at the paper's resolution (STL, VTP, statistics) and the resolved
+#      configuration;
+#   2. calibrate: the patch tests' moduli beside the paper's (Table 2 parameters);
+#   3. stretch: the quasi-static optical-tweezers curve of the discocyte against Mills et al. (2004),
+#      with all six forces and without F_ad/F_tc (the paper's Fig. 8);
+#   4. shear: a short sweep (0, 1000, 2000 1/s) of the discocyte with and without F_ad/F_tc, on the
+#      coarse setting of README.md (642 vertices, dx 0.75 um, 10 strains: not yet steady);
+#   5. capillary: the three morphologies through the paper's three-morphology tube (6.8 um throat,
+#      Re 0.04, dx 0.5 um) with 642-vertex cells and a stiffer local-area term (README.md);
+#   6. report: out/report/report.html, summary.md, summary.json over every run above.
+# How far each setting is from the paper's is in README.md ("The main job").
 set -euo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 output_dir="${1:-$repo_root/out}"
@@ -12,19 +20,59 @@ output_dir="${1:-$repo_root/out}"
 "$repo_root/scripts/setup.sh" "$repo_root/build"
 rbcsim="$repo_root/build/cli/rbcsim"
 mkdir -p "$output_dir"
+threads="$(nproc)"
+started_s=$SECONDS
+# Each experiment's run directory is replaced, so a second main job does not mix old and new runs.
+fresh_run() { rm -rf "${output_dir:?}/$1"; echo "$output_dir/$1"; }
+stage() { echo "== $1 ($((SECONDS - started_s)) s)" >&2; }
 
+stage "meshes and configuration"
 "$rbcsim" config show > "$output_dir/config.json"
 for morphology in discocyte stomatocyte-II echinocyte-III; do
   "$rbcsim" mesh generate --morphology "$morphology" -o "$output_dir/$morphology.stl" --json \
     > "$output_dir/$morphology.mesh.json"
   "$rbcsim" mesh import "$output_dir/$morphology.stl" -o "$output_dir/$morphology.vtp" >/dev/null
-  echo "== $morphology"
+  echo "-- $morphology"
   "$rbcsim" mesh info "$output_dir/$morphology.stl"
 done
-echo "== stretch (quasi-static, the 13 forces of Mills et al. 2004)"
-"$rbcsim" stretch --output "$output_dir/stretch-discocyte"
+
+stage "calibrate (hexagonal and two-triangle patch tests, Table 2)"
+"$rbcsim" calibrate --output "$(fresh_run calibrate)"
+
+stage "stretch (quasi-static, the 13 forces of Mills et al. 2004)"
+"$rbcsim" stretch --output "$(fresh_run stretch-discocyte)"
 "$rbcsim" stretch --set membrane.forces=link,bend,area,volume \
-  --output "$output_dir/stretch-discocyte-four-terms"
-"$rbcsim" report "$output_dir/stretch-discocyte" "$output_dir/stretch-discocyte-four-terms" \
-  -o "$output_dir/report"
-echo "main: results in $output_dir" >&2
+  --output "$(fresh_run stretch-discocyte-four-terms)"
+
+stage "shear (discocyte, 0/1000/2000 1/s, coarse setting)"
+shear_setting=(--set mesh.subdivisions=3 --set lattice.spacing_um=0.75 --set membrane.k_link_kBT=14
+               --rates 0,1000,2000 --max-strain 10 --threads "$threads")
+"$rbcsim" shear "${shear_setting[@]}" --output "$(fresh_run shear-discocyte)"
+"$rbcsim" shear "${shear_setting[@]}" --set membrane.forces=link,bend,area,volume \
+  --output "$(fresh_run shear-discocyte-four-terms)"
+
+stage "capillary (three morphologies, the paper's three-morphology tube and 6.8 um throat)"
+# 642-vertex cells on the paper's dx = 0.5 um at Re 0.04. The links are doubled (the coarser
+# mesh's links are twice as long, and Eq. 6's spring weakens as 1/L0: doubling restores the
+# paper's shear modulus) and the local-area weight is 80 kBT instead of Table 2's 5, without which
+# a triangle steps onto the area limit in the throat (README.md, capillary). One thread per run,
+# the three runs side by side.
+capillary_setting=(--geometry paper-morphology --set mesh.subdivisions=3
+                   --set membrane.k_area_kBT=80 --set membrane.vertex_force_cap_pN=200
+                   --set output.fluid_interval_s=0 --threads 1)
+declare -A capillary_k_link=([discocyte]=14 [echinocyte-III]=22 [stomatocyte-II]=22)
+capillary_pids=()
+for morphology in discocyte echinocyte-III stomatocyte-II; do
+  "$rbcsim" capillary "${capillary_setting[@]}" --morphology "$morphology" \
+    --set membrane.k_link_kBT="${capillary_k_link[$morphology]}" \
+    --output "$(fresh_run "capillary-$morphology")" > "$output_dir/capillary-$morphology.txt" &
+  capillary_pids+=($!)
+done
+for pid in "${capillary_pids[@]}"; do wait "$pid"; done
+cat "$output_dir"/capillary-*.txt
+
+stage "report"
+"$rbcsim" report "$output_dir"/{calibrate,stretch-discocyte,stretch-discocyte-four-terms} \
+  "$output_dir"/{shear-discocyte,shear-discocyte-four-terms} \
+  "$output_dir"/capillary-{discocyte,echinocyte-III,stomatocyte-II} -o "$output_dir/report"
+stage "main: results in $output_dir, report in $output_dir/report/report.html"
