@@ -74,10 +74,11 @@ void set_policy(coupling::CoupledSimulation& simulation, const std::filesystem::
   simulation.set_checkpoint_policy({file, "capillary resume test", 0, 0.0});
 }
 
-// The fluid's checkpoint is not yet bit-exact with the capillary's velocity inlet and pressure
-// outlet (the optimised kernel's open-boundary populations are rebuilt by the reference streaming;
-// the Lees-Edwards checkpoint test, without open boundaries, is bit-exact): after the resume the
-// numbers agree to rounding, kResumedRelativeTolerance, not to the bit. The record up to the
+// Called directly (no snapshot observers), a resumed run's steps after the checkpoint agree with
+// the straight run's to rounding, not to the bit (cause not yet found; suspected: the optimised
+// fluid kernel's population layout, which a checkpoint restores as natural layout, and the
+// velocity inlet / pressure outlet). Through the binary, which writes fluid snapshots, the
+// resumed result.json and time series are bit-identical (the test below). The record up to the
 // checkpoint comes from the checkpoint and is compared bit for bit.
 constexpr double kResumedRelativeTolerance = 1e-12;
 
@@ -190,15 +191,8 @@ TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
   ASSERT_EQ(resumed.exit_code, 1) << resumed.err;
   const auto resumed_result =
       nlohmann::json::parse(rbcsim::testing::read_text(run_dir / "result.json"));
-  for (const auto* key : {"steps", "stop_reason", "initial_deformation_index"}) {
-    EXPECT_EQ(resumed_result["capillary"][key], straight_result["capillary"][key]) << key;
-  }
-  // The header and the rows of steps 0-20 (from the checkpoint) bit for bit, then as many rows.
-  const auto resumed_rows = rows_of(run_dir / "capillary_timeseries.csv");
-  ASSERT_EQ(resumed_rows.size(), straight_rows.size());
-  for (std::size_t row = 0; row <= 20 / kSampleSteps + 1; ++row) {
-    EXPECT_EQ(resumed_rows[row], straight_rows[row]) << row;
-  }
+  EXPECT_EQ(resumed_result["capillary"], straight_result["capillary"]);
+  EXPECT_EQ(rows_of(run_dir / "capillary_timeseries.csv"), straight_rows);
 }
 
 }  // namespace
