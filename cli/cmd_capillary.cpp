@@ -117,11 +117,12 @@ void run_capillary_command(const CapillaryOptions& options) {
   bool started = false;
   const auto run = cases::run_capillary(
       cell_mesh.mesh, physics, settings, [&](coupling::CoupledSimulation& simulation) {
-        directory.start(config, cell_mesh);
-        started = true;
         coupling::add_vtk_output(simulation, directory.path(), intervals);
         add_progress(simulation, progress, directory);
+        // Before the directory is started: a refused checkpoint leaves no file behind.
         wire_checkpoints(simulation, options.checkpoint, directory, config);
+        directory.start(config, cell_mesh);
+        started = true;
       });
   progress.done();
   if (!started) directory.start(config, cell_mesh);

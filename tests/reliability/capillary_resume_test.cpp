@@ -195,5 +195,17 @@ TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
   EXPECT_EQ(rows_of(run_dir / "capillary_timeseries.csv"), straight_rows);
 }
 
+TEST(CapillaryResume, AMissingCheckpointIsBadInputAndLeavesNoFile) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  std::string settings;
+  for (const auto& assignment : kCoarseAssignments) settings += " --set " + assignment;
+  const auto resumed = rbcsim::testing::run_rbcsim(
+      "capillary --quiet --resume '" + run_dir.string() + "'" + settings, scratch.path());
+  EXPECT_EQ(resumed.exit_code, 2);
+  EXPECT_NE(resumed.err.find("checkpoint.bin"), std::string::npos) << resumed.err;
+  EXPECT_FALSE(std::filesystem::exists(run_dir));
+}
+
 }  // namespace
 }  // namespace rbcsim::cases
