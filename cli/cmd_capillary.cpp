@@ -29,6 +29,7 @@ constexpr std::size_t kProgressIntervalSteps = 1000;
 
 struct CapillaryOptions {
   CommonOptions common;
+  CheckpointOptions checkpoint;
   std::optional<std::string> mesh_file;
   std::optional<std::string> geometry;
   std::optional<std::string> wall_file;
@@ -116,16 +117,19 @@ void run_capillary_command(const CapillaryOptions& options) {
   bool started = false;
   const auto run = cases::run_capillary(
       cell_mesh.mesh, physics, settings, [&](coupling::CoupledSimulation& simulation) {
-        directory.start(config, cell_mesh);
-        started = true;
         coupling::add_vtk_output(simulation, directory.path(), intervals);
         add_progress(simulation, progress, directory);
+        // Before the directory is started: a refused checkpoint leaves no file behind.
+        wire_checkpoints(simulation, options.checkpoint, directory, config);
+        directory.start(config, cell_mesh);
+        started = true;
       });
   progress.done();
   if (!started) directory.start(config, cell_mesh);
 
   write_table(directory, run);
-  auto result = directory.result_head(run.ok());
+  auto result = run.interrupted ? directory.result_head_with_status("interrupted")
+                                : directory.result_head(run.ok());
   if (!run.ok()) result["failure"] = run.failure;
   result["headline"] = headline(run);
   result["files"] = {{"config", "config.json"},
@@ -141,6 +145,7 @@ void run_capillary_command(const CapillaryOptions& options) {
   } else if (!options.common.quiet) {
     print_summary(result, run, directory);
   }
+  if (run.interrupted) throw Interrupted("capillary: " + run.failure);
   if (!run.ok()) throw RuntimeFailure("capillary: " + run.failure);
 }
 
@@ -167,6 +172,7 @@ void attach_capillary(CLI::App& application) {
                    "capillary.wall_repulsion_pN_per_um2=0")
       ->type_name("FILE.stl");
   add_common_options(command, options->common);
+  add_checkpoint_options(command, options->checkpoint, options->common);
   command->callback([options] { run_capillary_command(*options); });
 }
 

@@ -7,6 +7,7 @@
 #include <memory>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "cases/capillary_flow.hpp"
 #include "cases/named_table.hpp"
@@ -177,11 +178,18 @@ CapillarySample sample_of(const coupling::CoupledSimulation& simulation) {
   return sample;
 }
 
+void copy_transit(const NarrowSectionTransit& transit, CapillaryRun& run) {
+  run.entry_time_s = transit.entry_time_s();
+  run.exit_time_s = transit.exit_time_s();
+  run.transit_time_s = transit.transit_time_s();
+  run.passed = transit.passed();
+}
+
 // Follows the transit and the peak deformation every step.
 class TransitRecorder {
  public:
-  TransitRecorder(CapillaryRun& run)
-      : run_(run), transit_(run.narrow_start_um, run.narrow_end_um) {}
+  TransitRecorder(CapillaryRun& run, NarrowSectionTransit& transit)
+      : run_(run), transit_(transit) {}
 
   void operator()(const coupling::CoupledSimulation& simulation) {
     const double time_s = simulation.time_s();
@@ -196,15 +204,89 @@ class TransitRecorder {
     }
     run_.final_deformation_index = index;
     run_.final_centroid_x_um = centroid_x_um;
-    run_.entry_time_s = transit_.entry_time_s();
-    run_.exit_time_s = transit_.exit_time_s();
-    run_.transit_time_s = transit_.transit_time_s();
-    run_.passed = transit_.passed();
+    copy_transit(transit_, run_);
   }
 
  private:
   CapillaryRun& run_;
-  NarrowSectionTransit transit_;
+  NarrowSectionTransit& transit_;
+};
+
+// The samples taken so far and the steps they were taken at.
+struct SampleLog {
+  std::vector<CapillarySample>& samples;
+  std::vector<std::size_t> steps;
+};
+
+// Per sample in a checkpoint: its step and its nine numbers.
+constexpr std::size_t kSampleValues = 10;
+
+// The samples taken on their interval, as an array of kSampleValues numbers per sample. An
+// interrupted run's observers also see the state reached between two intervals; that sample is
+// reported but left out of the checkpoint, which a straight run would not have.
+std::vector<double> flattened(const SampleLog& log, std::size_t interval_steps) {
+  std::vector<double> values;
+  for (std::size_t i = 0; i < log.samples.size(); ++i) {
+    if (log.steps[i] % interval_steps != 0) continue;
+    const auto& sample = log.samples[i];
+    values.insert(values.end(),
+                  {static_cast<double>(log.steps[i]), sample.time_s, sample.centroid_um.x(),
+                   sample.centroid_um.y(), sample.centroid_um.z(), sample.velocity_x_m_per_s,
+                   sample.deformation_index, sample.extents_um.x(), sample.extents_um.y(),
+                   sample.extents_um.z()});
+  }
+  return values;
+}
+
+void restore_samples(SampleLog& log, const std::vector<double>& values) {
+  log.samples.clear();
+  log.steps.clear();
+  for (std::size_t i = 0; i + kSampleValues <= values.size(); i += kSampleValues) {
+    const auto* v = values.data() + i;
+    log.steps.push_back(static_cast<std::size_t>(v[0]));
+    log.samples.push_back({v[1], Vec3(v[2], v[3], v[4]), v[5], v[6], Vec3(v[7], v[8], v[9])});
+  }
+}
+
+// Never stops the run: it carries what the observers recorded so far (the samples, the transit,
+// the peak deformation) in the checkpoint, so a resumed run reports what a straight one would.
+class RecordInCheckpoint final : public coupling::StopCriterion {
+ public:
+  RecordInCheckpoint(CapillaryRun& run, NarrowSectionTransit& transit, SampleLog& log,
+                     std::size_t sample_interval_steps)
+      : run_(run), transit_(transit), log_(log), sample_interval_steps_(sample_interval_steps) {}
+  std::optional<std::string> check(const coupling::CoupledSimulation& /*simulation*/) override {
+    return std::nullopt;
+  }
+  void save_state(StateArchive& archive, const std::string& prefix) const override {
+    archive.put(prefix + "samples", flattened(log_, sample_interval_steps_));
+    archive.put(prefix + "deformation",
+                {run_.initial_deformation_index, run_.peak_deformation_index, run_.peak_time_s,
+                 run_.peak_centroid_x_um, run_.final_deformation_index, run_.final_centroid_x_um});
+    transit_.save_state(archive, prefix + "transit.");
+  }
+  void restore_state(StateArchive& archive, const std::string& prefix) override {
+    const auto samples = archive.take(prefix + "samples", std::nullopt);
+    if (samples.size() % kSampleValues != 0) {
+      throw InputError(archive.source(), prefix + "samples: not whole samples");
+    }
+    restore_samples(log_, samples);
+    const auto deformation = archive.take(prefix + "deformation", 6);
+    run_.initial_deformation_index = deformation[0];
+    run_.peak_deformation_index = deformation[1];
+    run_.peak_time_s = deformation[2];
+    run_.peak_centroid_x_um = deformation[3];
+    run_.final_deformation_index = deformation[4];
+    run_.final_centroid_x_um = deformation[5];
+    transit_.restore_state(archive, prefix + "transit.");
+    copy_transit(transit_, run_);
+  }
+
+ private:
+  CapillaryRun& run_;
+  NarrowSectionTransit& transit_;
+  SampleLog& log_;
+  std::size_t sample_interval_steps_;
 };
 
 void add_stop_criteria(coupling::CoupledSimulation& simulation, const CapillaryRun& run,
@@ -293,22 +375,36 @@ CapillaryRun run_capillary(const mesh::TriangleMesh& cell_mesh, const CapillaryP
                                          lattice.grid_um.origin_um);
   simulation.add_cell(std::move(model), cell.positions_um);
   add_repulsion(simulation, physics.wall, cell, settings);
-  simulation.add_observer({"capillary_transit", 1, TransitRecorder(run)});
+  NarrowSectionTransit transit(run.narrow_start_um, run.narrow_end_um);
+  simulation.add_observer({"capillary_transit", 1, TransitRecorder(run, transit)});
+  const auto interval_steps = sample_interval_steps(physics.units, settings.sample_interval_s);
+  SampleLog log{run.samples, {}};
   simulation.add_observer(
-      {"capillary_samples", sample_interval_steps(physics.units, settings.sample_interval_s),
-       [&run](const coupling::CoupledSimulation& s) { run.samples.push_back(sample_of(s)); }});
+      {"capillary_samples", interval_steps, [&log](const coupling::CoupledSimulation& s) {
+         log.samples.push_back(sample_of(s));
+         log.steps.push_back(s.time_step());
+       }});
   add_stop_criteria(simulation, run, lattice, settings);
+  simulation.add_stop_criterion(
+      std::make_unique<RecordInCheckpoint>(run, transit, log, interval_steps));
   if (configure) configure(simulation);
-  try {
-    const auto summary = simulation.run();
-    run.steps = summary.steps;
-    run.time_s = summary.time_s;
-    run.stop_reason = summary.stop_reason;
-    run.force_capped_steps = summary.capped_steps_per_cell.at(0);
-  } catch (const RuntimeFailure& failure) {
+  // Steps and capped steps from the simulation's counters (restored on resume), not from this
+  // run() call's summary.
+  const auto record_end = [&run, &simulation] {
     run.steps = simulation.time_step();
     run.time_s = simulation.time_s();
     run.force_capped_steps = simulation.capped_steps_per_cell().at(0);
+  };
+  try {
+    run.stop_reason = simulation.run().stop_reason;
+    record_end();
+  } catch (const Interrupted& interrupted) {
+    record_end();
+    run.interrupted = true;
+    run.stop_reason = run.failure = interrupted.what();
+    return run;
+  } catch (const RuntimeFailure& failure) {
+    record_end();
     run.failure = failure.what();
     return run;
   }

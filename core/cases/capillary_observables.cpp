@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <vector>
 
 namespace rbcsim::cases {
 namespace {
@@ -86,6 +87,33 @@ void NarrowSectionTransit::add_sample(double time_s, double centroid_x_um) {
 std::optional<double> NarrowSectionTransit::transit_time_s() const {
   if (!entry_time_s_ || !exit_time_s_) return std::nullopt;
   return *exit_time_s_ - *entry_time_s_;
+}
+
+namespace {
+
+// An optional number as an array of zero or one element.
+std::vector<double> optional_array(const std::optional<double>& value) {
+  return value ? std::vector<double>{*value} : std::vector<double>{};
+}
+
+std::optional<double> optional_of(const std::vector<double>& array) {
+  return array.empty() ? std::nullopt : std::optional<double>(array.front());
+}
+
+}  // namespace
+
+void NarrowSectionTransit::save_state(StateArchive& archive, const std::string& prefix) const {
+  archive.put(prefix + "previous_time_s", optional_array(previous_time_s_));
+  archive.put(prefix + "previous_x_um", {previous_x_um_});
+  archive.put(prefix + "entry_time_s", optional_array(entry_time_s_));
+  archive.put(prefix + "exit_time_s", optional_array(exit_time_s_));
+}
+
+void NarrowSectionTransit::restore_state(StateArchive& archive, const std::string& prefix) {
+  previous_time_s_ = optional_of(archive.take(prefix + "previous_time_s", std::nullopt));
+  previous_x_um_ = archive.take_number(prefix + "previous_x_um");
+  entry_time_s_ = optional_of(archive.take(prefix + "entry_time_s", std::nullopt));
+  exit_time_s_ = optional_of(archive.take(prefix + "exit_time_s", std::nullopt));
 }
 
 }  // namespace rbcsim::cases

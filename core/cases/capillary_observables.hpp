@@ -10,7 +10,9 @@
 
 #include <optional>
 #include <span>
+#include <string>
 
+#include "common/state_archive.hpp"
 #include "common/vec3.hpp"
 
 namespace rbcsim::cases {
@@ -53,6 +55,10 @@ class NarrowSectionTransit {
   bool passed() const { return exit_time_s_.has_value(); }
   double start_um() const { return start_um_; }
   double end_um() const { return end_um_; }
+
+  // Checkpoints: the last sample and the crossings so far, as arrays named `<prefix>...`.
+  void save_state(StateArchive& archive, const std::string& prefix) const;
+  void restore_state(StateArchive& archive, const std::string& prefix);
 
  private:
   double start_um_;

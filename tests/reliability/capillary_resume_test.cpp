@@ -1,0 +1,211 @@
+// Checkpoint and resume of the capillary experiment (DESIGN.md §6): a run interrupted after
+// kInterruptStep steps, then resumed from its checkpoint, ends with the straight run's samples,
+// deformation record and step counts (the record up to the checkpoint bit for bit, although the
+// interrupted run's observers saw a state between two sample intervals), also through the binary
+// with --checkpoint-every and --resume.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cases/capillary_case.hpp"
+#include "common/interrupt.hpp"
+#include "config/config.hpp"
+#include "coupling/checkpoint.hpp"
+#include "setup/capillary_from_config.hpp"
+#include "setup/cell_from_config.hpp"
+#include "support/run_rbcsim.hpp"
+#include "support/scratch_directory.hpp"
+
+namespace rbcsim::cases {
+namespace {
+
+using rbcsim::testing::ScratchDirectory;
+
+constexpr std::size_t kTotalSteps = 30;
+constexpr std::size_t kSampleSteps = 4;
+constexpr std::size_t kInterruptStep = 13;  // not a multiple of kSampleSteps
+
+// Clears the flag whatever the test does, so later tests in this process are not interrupted.
+struct InterruptScope {
+  InterruptScope() { clear_interrupt(); }
+  ~InterruptScope() { clear_interrupt(); }
+};
+
+// The coarse capillary of capillary_case_test.cpp (dx = 1 um, the 162-vertex cell).
+const std::vector<std::string> kCoarseAssignments = {
+    "mesh.subdivisions=2", "lattice.spacing_um=1", "capillary.throat_diameter_um=9",
+    "capillary.inlet_velocity_m_per_s=0.014", "capillary.fluid_tolerance=1e-5"};
+
+// The coarse capillary run for kTotalSteps steps with a sample every kSampleSteps.
+class CoarseCapillary {
+ public:
+  CoarseCapillary()
+      : config_(config::resolve_config({.assignments = kCoarseAssignments})),
+        wall_(setup::capillary_wall_from(config_)),
+        cell_(setup::cell_mesh_from(config_)) {}
+
+  CapillaryRun run(const CapillaryConfigure& configure) const {
+    const auto physics = setup::capillary_physics_from(config_, wall_, {});
+    auto settings = setup::capillary_settings_from(config_, wall_);
+    const double dt_s = dt_s_of();
+    settings.max_time_s = (static_cast<double>(kTotalSteps) - 0.5) * dt_s;
+    settings.sample_interval_s = static_cast<double>(kSampleSteps) * dt_s;
+    return run_capillary(cell_.mesh, physics, settings, configure);
+  }
+
+  double dt_s_of() const { return setup::capillary_physics_from(config_, wall_, {}).units.dt_s(); }
+
+ private:
+  config::Config config_;
+  setup::CapillaryWall wall_;
+  setup::CellMesh cell_;
+};
+
+void set_policy(coupling::CoupledSimulation& simulation, const std::filesystem::path& file) {
+  simulation.set_checkpoint_policy({file, "capillary resume test", 0, 0.0});
+}
+
+// Called directly (no snapshot observers), a resumed run's steps after the checkpoint agree with
+// the straight run's to rounding, not to the bit (cause not yet found; suspected: the optimised
+// fluid kernel's population layout, which a checkpoint restores as natural layout, and the
+// velocity inlet / pressure outlet). Through the binary, which writes fluid snapshots, the
+// resumed result.json and time series are bit-identical (the test below). The record up to the
+// checkpoint comes from the checkpoint and is compared bit for bit.
+constexpr double kResumedRelativeTolerance = 1e-12;
+
+void expect_close(double resumed, double straight, double tolerance) {
+  EXPECT_NEAR(resumed, straight, tolerance * std::max(1.0, std::abs(straight)));
+}
+
+void expect_close(const Vec3& resumed, const Vec3& straight, double tolerance) {
+  for (int axis = 0; axis < 3; ++axis) expect_close(resumed[axis], straight[axis], tolerance);
+}
+
+// tolerance 0: bit-identical.
+void expect_same(const CapillarySample& resumed, const CapillarySample& straight,
+                 double tolerance) {
+  EXPECT_EQ(resumed.time_s, straight.time_s);
+  expect_close(resumed.centroid_um, straight.centroid_um, tolerance);
+  expect_close(resumed.velocity_x_m_per_s, straight.velocity_x_m_per_s, tolerance);
+  expect_close(resumed.deformation_index, straight.deformation_index, tolerance);
+  expect_close(resumed.extents_um, straight.extents_um, tolerance);
+}
+
+TEST(CapillaryResume, InterruptedThenResumedRunEndsAsAStraightRun) {
+  const InterruptScope scope;
+  const CoarseCapillary capillary;
+  const auto straight = capillary.run({});
+  ASSERT_EQ(straight.steps, kTotalSteps) << straight.stop_reason;
+
+  const ScratchDirectory scratch;
+  const auto file = scratch.path() / coupling::kCheckpointFileName;
+  const auto interrupted = capillary.run([&file](coupling::CoupledSimulation& simulation) {
+    set_policy(simulation, file);
+    simulation.add_observer({"interrupt", 1, [](const coupling::CoupledSimulation& s) {
+                               if (s.time_step() == kInterruptStep) request_interrupt(SIGINT);
+                             }});
+  });
+  ASSERT_TRUE(interrupted.interrupted) << interrupted.failure;
+  EXPECT_EQ(interrupted.steps, kInterruptStep);
+  // The results so far include the state reached, between two sample intervals.
+  ASSERT_EQ(interrupted.samples.size(), kInterruptStep / kSampleSteps + 2);
+  EXPECT_EQ(interrupted.samples.back().time_s, interrupted.time_s);
+  ASSERT_TRUE(std::filesystem::exists(file));
+  clear_interrupt();
+
+  const auto resumed = capillary.run([&file](coupling::CoupledSimulation& simulation) {
+    set_policy(simulation, file);
+    simulation.resume_from(file);
+  });
+  ASSERT_FALSE(resumed.interrupted);
+  EXPECT_EQ(resumed.steps, straight.steps);
+  EXPECT_EQ(resumed.time_s, straight.time_s);
+  EXPECT_EQ(resumed.stop_reason, straight.stop_reason);
+  EXPECT_EQ(resumed.force_capped_steps, straight.force_capped_steps);
+  EXPECT_EQ(resumed.initial_deformation_index, straight.initial_deformation_index);
+  const double tolerance = kResumedRelativeTolerance;
+  expect_close(resumed.peak_deformation_index, straight.peak_deformation_index, tolerance);
+  EXPECT_EQ(resumed.peak_time_s, straight.peak_time_s);
+  expect_close(resumed.peak_centroid_x_um, straight.peak_centroid_x_um, tolerance);
+  expect_close(resumed.final_deformation_index, straight.final_deformation_index, tolerance);
+  expect_close(resumed.final_centroid_x_um, straight.final_centroid_x_um, tolerance);
+  EXPECT_EQ(resumed.entry_time_s.has_value(), straight.entry_time_s.has_value());
+  EXPECT_EQ(resumed.exit_time_s.has_value(), straight.exit_time_s.has_value());
+  ASSERT_EQ(resumed.samples.size(), straight.samples.size());
+  for (std::size_t i = 0; i < straight.samples.size(); ++i) {
+    SCOPED_TRACE(i);
+    const bool from_checkpoint = i * kSampleSteps <= kInterruptStep;
+    expect_same(resumed.samples[i], straight.samples[i], from_checkpoint ? 0.0 : tolerance);
+  }
+}
+
+std::vector<std::string> rows_of(const std::filesystem::path& file) {
+  std::vector<std::string> rows;
+  std::istringstream text(rbcsim::testing::read_text(file));
+  for (std::string row; std::getline(text, row);) rows.push_back(row);
+  return rows;
+}
+
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+// Through the binary: a run with --checkpoint-every leaves its last checkpoint (step 20 of 30);
+// --resume of its directory runs the last steps again and must rewrite the same result.json
+// "capillary" object and capillary_timeseries.csv.
+TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
+  const ScratchDirectory scratch;
+  const double dt_s = CoarseCapillary().dt_s_of();
+  std::string settings = " --quiet --threads 1";
+  for (const auto& assignment : kCoarseAssignments) settings += " --set " + assignment;
+  settings +=
+      " --set capillary.max_time_s=" +
+      number_text((static_cast<double>(kTotalSteps) - 0.5) * dt_s) +
+      " --set capillary.sample_interval_s=" + number_text(static_cast<double>(kSampleSteps) * dt_s);
+  const auto run_dir = scratch.path() / "run";
+  const auto straight = rbcsim::testing::run_rbcsim(
+      "capillary --checkpoint-every 10 --output '" + run_dir.string() + "'" + settings,
+      scratch.path());
+  // 30 steps leave the cell upstream of the narrow section: a "failed" run (exit 1).
+  ASSERT_EQ(straight.exit_code, 1) << straight.err;
+  ASSERT_TRUE(std::filesystem::exists(run_dir / coupling::kCheckpointFileName));
+  const auto straight_result =
+      nlohmann::json::parse(rbcsim::testing::read_text(run_dir / "result.json"));
+  const auto straight_rows = rows_of(run_dir / "capillary_timeseries.csv");
+  std::filesystem::remove(run_dir / "result.json");
+  std::filesystem::remove(run_dir / "capillary_timeseries.csv");
+
+  const auto resumed = rbcsim::testing::run_rbcsim(
+      "capillary --resume '" + run_dir.string() + "'" + settings, scratch.path());
+  ASSERT_EQ(resumed.exit_code, 1) << resumed.err;
+  const auto resumed_result =
+      nlohmann::json::parse(rbcsim::testing::read_text(run_dir / "result.json"));
+  EXPECT_EQ(resumed_result["capillary"], straight_result["capillary"]);
+  EXPECT_EQ(rows_of(run_dir / "capillary_timeseries.csv"), straight_rows);
+}
+
+TEST(CapillaryResume, AMissingCheckpointIsBadInputAndLeavesNoFile) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  std::string settings;
+  for (const auto& assignment : kCoarseAssignments) settings += " --set " + assignment;
+  const auto resumed = rbcsim::testing::run_rbcsim(
+      "capillary --quiet --resume '" + run_dir.string() + "'" + settings, scratch.path());
+  EXPECT_EQ(resumed.exit_code, 2);
+  EXPECT_NE(resumed.err.find("checkpoint.bin"), std::string::npos) << resumed.err;
+  EXPECT_FALSE(std::filesystem::exists(run_dir));
+}
+
+}  // namespace
+}  // namespace rbcsim::cases
