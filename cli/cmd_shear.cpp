@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <iterator>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -19,9 +20,12 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common_options.hpp"
+#include "config/config_sources.hpp"
 #include "coupling/snapshot.hpp"
+#include "io/atomic_file.hpp"
 #include "io/csv_table.hpp"
 #include "io/pvd_collection.hpp"
+#include "io/text_file.hpp"
 #include "membrane/membrane_model.hpp"
 #include "run_directory.hpp"
 #include "setup/cell_from_config.hpp"
@@ -33,6 +37,7 @@ namespace {
 
 struct ShearOptions {
   CommonOptions common;
+  CheckpointOptions checkpoint;
   std::optional<std::string> rates;
   std::optional<std::string> boundary;
   std::optional<double> max_strain;
@@ -59,17 +64,29 @@ std::string shape_file_name(std::size_t index) {
   return name.data();
 }
 
-// Writes each rate's final shape as it ends (from the thread that ran it) and reports progress.
+constexpr const char* kPointFileName = "point.json";
+
+// Writes each rate's final shape and its point (what a resumed run keeps) as it ends, from the
+// thread that ran it, and reports progress.
 class ShapeRecorder {
  public:
-  ShapeRecorder(const RunDirectory& run, std::size_t rate_count, const Progress& progress)
-      : run_(run), rate_count_(rate_count), progress_(progress) {
+  ShapeRecorder(const RunDirectory& run, const config::Config& config, std::size_t rate_count,
+                const Progress& progress)
+      : run_(run),
+        fingerprint_(config_fingerprint(config)),
+        rate_count_(rate_count),
+        progress_(progress) {
     std::filesystem::create_directories(run_.path() / "shapes");
   }
 
   void operator()(std::size_t rate_index, const cases::ShearPoint& point,
                   const coupling::CoupledSimulation& simulation) {
     coupling::write_cell_snapshot(run_.path() / shape_file_name(rate_index), simulation, 0);
+    const auto rate_path = run_.path() / cases::shear_rate_directory(rate_index);
+    std::filesystem::create_directories(rate_path);
+    auto record = cases::shear_point_record(point);
+    record["config_sha256"] = fingerprint_;
+    io::write_text_atomically(rate_path / kPointFileName, record.dump(2) + "\n");
     const std::lock_guard lock(mutex_);
     ++finished_;
     progress_.update("shear: " + std::to_string(finished_) + "/" + std::to_string(rate_count_) +
@@ -80,6 +97,7 @@ class ShapeRecorder {
 
  private:
   const RunDirectory& run_;
+  std::string fingerprint_;
   std::size_t rate_count_;
   const Progress& progress_;
   std::mutex mutex_;
@@ -159,6 +177,35 @@ std::string failures(const std::vector<cases::ShearPoint>& points) {
   return text;
 }
 
+// With --resume: the points of the rates that had ended (rate_<i>/point.json), refused if written
+// with another config.
+std::vector<std::optional<cases::ShearPoint>> completed_points(const ShearOptions& options,
+                                                               const config::Config& config,
+                                                               std::size_t rate_count) {
+  std::vector<std::optional<cases::ShearPoint>> points(rate_count);
+  if (options.checkpoint.resume_directory.empty()) return points;
+  const auto fingerprint = config_fingerprint(config);
+  for (std::size_t i = 0; i < rate_count; ++i) {
+    const auto file =
+        options.checkpoint.resume_directory / cases::shear_rate_directory(i) / kPointFileName;
+    if (!std::filesystem::exists(file)) continue;
+    const auto record = config::parse_json(io::read_text_file(file), file.string());
+    if (record.value("config_sha256", std::string()) != fingerprint) {
+      throw InputError(file.string(), "written by a run with a different config");
+    }
+    points[i] = cases::shear_point_from_record(record, file.string());
+  }
+  return points;
+}
+
+// The rates that ended: interrupted ones are left out of the results.
+std::vector<cases::ShearPoint> ended_points(const std::vector<cases::ShearPoint>& points) {
+  std::vector<cases::ShearPoint> ended;
+  std::copy_if(points.begin(), points.end(), std::back_inserter(ended),
+               [](const auto& point) { return !point.interrupted; });
+  return ended;
+}
+
 void run_shear_command(const ShearOptions& options) {
   const auto config = resolve_shear_config(options);
   const auto settings = setup::shear_settings_from(config);
@@ -171,17 +218,27 @@ void run_shear_command(const ShearOptions& options) {
   const RunDirectory directory("shear", options.common, config);
   const auto engine = setup::shear_engine_from(config, directory.path());
   const auto plans = cases::plan_shear_rates(model, cell, engine, settings);
+  cases::ShearHooks hooks;
+  hooks.completed = completed_points(options, config, plans.size());
   directory.start(config, cell_mesh);
   const Progress progress(options.common);
-  ShapeRecorder recorder(directory, plans.size(), progress);
-  const auto points = cases::run_shear_sweep(model, cell, engine, settings, plans,
-                                             directory.threads(), std::ref(recorder));
+  ShapeRecorder recorder(directory, config, plans.size(), progress);
+  hooks.finished = std::ref(recorder);
+  hooks.configure = [&](std::size_t rate_index, coupling::CoupledSimulation& simulation) {
+    wire_checkpoints_in(cases::shear_rate_directory(rate_index), simulation, options.checkpoint,
+                        directory, config);
+  };
+  const auto all_points =
+      cases::run_shear_sweep(model, cell, engine, settings, plans, directory.threads(), hooks);
   progress.done();
+  const auto points = ended_points(all_points);
+  const bool interrupted = points.size() < all_points.size();
 
   write_table(directory, points);
   io::write_pvd_collection(directory.path() / "shear.pvd", shape_entries(points));
   const auto failure = failures(points);
-  auto result = directory.result_head(failure.empty());
+  auto result = interrupted ? directory.result_head_with_status("interrupted")
+                            : directory.result_head(failure.empty());
   if (!failure.empty()) result["failure"] = failure;
   result["headline"] = headline(points);
   result["files"] = {{"config", "config.json"}, {"table", "shear.csv"}, {"shapes", "shear.pvd"}};
@@ -192,6 +249,10 @@ void run_shear_command(const ShearOptions& options) {
     std::cout << result.dump(2) << '\n';
   } else if (!options.common.quiet) {
     print_table(result, points, directory, options.common.verbose);
+  }
+  if (interrupted) {
+    throw Interrupted("shear: interrupted after " + std::to_string(points.size()) + " of " +
+                      std::to_string(all_points.size()) + " rates");
   }
   if (!failure.empty()) throw RuntimeFailure("shear: " + failure);
 }
@@ -217,6 +278,7 @@ void attach_shear(CLI::App& application) {
                    "steady: false (default 40)")
       ->type_name("STRAIN");
   add_common_options(command, options->common);
+  add_checkpoint_options(command, options->checkpoint, options->common);
   command->callback([options] { run_shear_command(*options); });
 }
 

@@ -88,17 +88,42 @@ void RunDirectory::write_json(const std::string& file_name,
   io::write_text_atomically(path_ / file_name, content.dump(2) + "\n");
 }
 
-void wire_checkpoints(coupling::CoupledSimulation& simulation, const CheckpointOptions& options,
-                      const RunDirectory& directory, const config::Config& config) {
-  const auto interval =
-      options.every.empty() ? CheckpointInterval{} : parse_checkpoint_interval(options.every);
+std::string config_fingerprint(const config::Config& config) {
   io::Sha256 fingerprint;
   const auto tree = config.json().dump();
   fingerprint.update(std::as_bytes(std::span(tree.data(), tree.size())));
-  simulation.set_checkpoint_policy({directory.path() / coupling::kCheckpointFileName,
-                                    fingerprint.hex_digest(), interval.steps, interval.wall_s});
+  return fingerprint.hex_digest();
+}
+
+namespace {
+
+void set_checkpoint_file(coupling::CoupledSimulation& simulation, const CheckpointOptions& options,
+                         const std::filesystem::path& file, const config::Config& config) {
+  const auto interval =
+      options.every.empty() ? CheckpointInterval{} : parse_checkpoint_interval(options.every);
+  simulation.set_checkpoint_policy(
+      {file, config_fingerprint(config), interval.steps, interval.wall_s});
+}
+
+}  // namespace
+
+void wire_checkpoints(coupling::CoupledSimulation& simulation, const CheckpointOptions& options,
+                      const RunDirectory& directory, const config::Config& config) {
+  set_checkpoint_file(simulation, options, directory.path() / coupling::kCheckpointFileName,
+                      config);
   if (!options.resume_directory.empty()) {
     simulation.resume_from(options.resume_directory / coupling::kCheckpointFileName);
+  }
+}
+
+void wire_checkpoints_in(const std::filesystem::path& subdirectory,
+                         coupling::CoupledSimulation& simulation, const CheckpointOptions& options,
+                         const RunDirectory& directory, const config::Config& config) {
+  const auto file = directory.path() / subdirectory / coupling::kCheckpointFileName;
+  std::filesystem::create_directories(file.parent_path());
+  set_checkpoint_file(simulation, options, file, config);
+  if (!options.resume_directory.empty() && std::filesystem::exists(file)) {
+    simulation.resume_from(file);
   }
 }
 

@@ -62,6 +62,16 @@ class RunDirectory {
 void wire_checkpoints(coupling::CoupledSimulation& simulation, const CheckpointOptions& options,
                       const RunDirectory& directory, const config::Config& config);
 
+// The same for one of several simulations of a run, each with its checkpoint in its own
+// subdirectory of the run directory (shear's rate_<i>/, created here): with --resume, a
+// subdirectory without a checkpoint holds a simulation that had not started, which starts afresh.
+void wire_checkpoints_in(const std::filesystem::path& subdirectory,
+                         coupling::CoupledSimulation& simulation, const CheckpointOptions& options,
+                         const RunDirectory& directory, const config::Config& config);
+
+// The SHA-256 of the resolved config: what a checkpoint and a resume must agree on.
+std::string config_fingerprint(const config::Config& config);
+
 // Progress lines on stderr, only when stderr is a terminal and --quiet is not given (DESIGN.md
 // §1: results go to files and stdout, so pipelines never see progress).
 class Progress {

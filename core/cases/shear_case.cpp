@@ -12,6 +12,8 @@
 #include "cases/named_table.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/interrupt.hpp"
+#include "common/state_archive.hpp"
 #include "common/thread_count_scope.hpp"
 #include "coupling/stop_criteria.hpp"
 #include "membrane/cell_geometry.hpp"
@@ -98,6 +100,16 @@ class AllOf final : public coupling::StopCriterion {
     held_ = true;
     return reasons;
   }
+  void save_state(StateArchive& archive, const std::string& prefix) const override {
+    for (std::size_t i = 0; i < criteria_.size(); ++i) {
+      criteria_[i]->save_state(archive, prefix + std::to_string(i) + ".");
+    }
+  }
+  void restore_state(StateArchive& archive, const std::string& prefix) override {
+    for (std::size_t i = 0; i < criteria_.size(); ++i) {
+      criteria_[i]->restore_state(archive, prefix + std::to_string(i) + ".");
+    }
+  }
 
  private:
   std::vector<std::unique_ptr<coupling::StopCriterion>> criteria_;
@@ -133,16 +145,19 @@ std::unique_ptr<coupling::StopCriterion> steady_shape(double rate_per_s,
   return std::make_unique<AllOf>(std::move(criteria), held);
 }
 
-// The unwrapped angle of one membrane point about the cell's centroid, sampled in time.
+// The unwrapped angle of one membrane point about the cell's centroid, sampled every
+// interval_steps steps.
 class PhaseRecorder {
  public:
-  explicit PhaseRecorder(std::size_t vertex) : vertex_(vertex) {}
+  PhaseRecorder(std::size_t vertex, std::size_t interval_steps)
+      : vertex_(vertex), interval_steps_(interval_steps) {}
   void operator()(const coupling::CoupledSimulation& simulation) {
     const auto& cell = simulation.cell(0);
     const double angle = in_plane_angle_rad(cell.positions_lu()[vertex_], cell.centroid_lu());
     angles_rad_.push_back(angles_rad_.empty() ? angle
                                               : unwrap_angle_rad(angles_rad_.back(), angle));
     times_s_.push_back(simulation.time_s());
+    steps_.push_back(static_cast<double>(simulation.time_step()));
   }
   // Over the second half of the run (the first is the start-up); 0 with too few samples.
   double frequency_hz() const {
@@ -154,11 +169,50 @@ class PhaseRecorder {
     return rotation_frequency_hz(std::span(times_s_).subspan(first),
                                  std::span(angles_rad_).subspan(first));
   }
+  // The samples taken on their interval: an interrupted run's observers also see the state
+  // reached between two intervals, which a straight run never samples.
+  void save_state(StateArchive& archive, const std::string& prefix) const {
+    std::vector<double> steps, times_s, angles_rad;
+    for (std::size_t i = 0; i < steps_.size(); ++i) {
+      if (static_cast<std::size_t>(steps_[i]) % interval_steps_ != 0) continue;
+      steps.push_back(steps_[i]);
+      times_s.push_back(times_s_[i]);
+      angles_rad.push_back(angles_rad_[i]);
+    }
+    archive.put(prefix + "steps", std::move(steps));
+    archive.put(prefix + "times_s", std::move(times_s));
+    archive.put(prefix + "angles_rad", std::move(angles_rad));
+  }
+  void restore_state(StateArchive& archive, const std::string& prefix) {
+    steps_ = archive.take(prefix + "steps", std::nullopt);
+    times_s_ = archive.take(prefix + "times_s", steps_.size());
+    angles_rad_ = archive.take(prefix + "angles_rad", steps_.size());
+  }
 
  private:
   std::size_t vertex_;
+  std::size_t interval_steps_;
+  std::vector<double> steps_;
   std::vector<double> times_s_;
   std::vector<double> angles_rad_;
+};
+
+// Never stops the run: carries the tank-treading record in the checkpoint.
+class PhaseInCheckpoint final : public coupling::StopCriterion {
+ public:
+  explicit PhaseInCheckpoint(std::shared_ptr<PhaseRecorder> phase) : phase_(std::move(phase)) {}
+  std::optional<std::string> check(const coupling::CoupledSimulation& /*simulation*/) override {
+    return std::nullopt;
+  }
+  void save_state(StateArchive& archive, const std::string& prefix) const override {
+    phase_->save_state(archive, prefix);
+  }
+  void restore_state(StateArchive& archive, const std::string& prefix) override {
+    phase_->restore_state(archive, prefix);
+  }
+
+ private:
+  std::shared_ptr<PhaseRecorder> phase_;
 };
 
 // The vertex farthest along +x: on the rim of a cell whose axis is y, in the shear plane.
@@ -181,12 +235,6 @@ std::size_t steps_for(double strain, double strain_rate_lu) {
   return std::max<std::size_t>(1, static_cast<std::size_t>(std::llround(strain / strain_rate_lu)));
 }
 
-std::string rate_directory(std::size_t rate_index) {
-  std::array<char, 32> name{};
-  std::snprintf(name.data(), name.size(), "rate_%03zu", rate_index);
-  return name.data();
-}
-
 }  // namespace
 
 ShearBox shear_box(const mesh::TriangleMesh& cell, double dx_um, const ShearSettings& settings) {
@@ -197,6 +245,12 @@ ShearBox shear_box(const mesh::TriangleMesh& cell, double dx_um, const ShearSett
   box.nz = box.nx;
   box.ny = nodes_for(settings.gap_diameters * diameter_um, dx_um) + 2 * box.wall_layers;
   return box;
+}
+
+std::string shear_rate_directory(std::size_t rate_index) {
+  std::array<char, 32> name{};
+  std::snprintf(name.data(), name.size(), "rate_%03zu", rate_index);
+  return name.data();
 }
 
 std::vector<std::string> shear_boundary_names() {
@@ -298,14 +352,14 @@ std::vector<ShearRatePlan> plan_shear_rates(const membrane::MembraneModel& model
 ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::TriangleMesh& cell,
                           const ShearEngine& engine, const ShearSettings& settings,
                           const ShearRatePlan& plan, std::size_t rate_index,
-                          const ShearObserver& observer) {
+                          const ShearHooks& hooks) {
   const auto started = std::chrono::steady_clock::now();
   const double dx_um = engine.lattice.spacing_um;
   const ShearBox box = shear_box(cell, dx_um, settings);
   const auto units = simulated_units(engine, plan);
   const double flow_rate_lu = plan.shear_rate_per_s > 0.0 ? plan.strain_rate_lu : 0.0;
   auto coupling = engine.coupling;
-  if (!coupling.run_directory.empty()) coupling.run_directory /= rate_directory(rate_index);
+  if (!coupling.run_directory.empty()) coupling.run_directory /= shear_rate_directory(rate_index);
 
   coupling::CoupledSimulation simulation(
       shear_fluid(box, engine.fluid, settings.boundary, flow_rate_lu), units, coupling,
@@ -315,22 +369,27 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
   bool steady = false;
   simulation.add_stop_criterion(steady_shape(time_unit_rate, settings, steady));
   simulation.add_stop_criterion(coupling::stop_at_time(settings.max_strain / time_unit_rate));
-  auto phase = std::make_shared<PhaseRecorder>(tracked_vertex(cell));
-  simulation.add_observer(
-      {"tank_treading_point",
-       steps_for(settings.check_interval_strain / kPhaseSamplesPerCheck, plan.strain_rate_lu),
-       [phase](const coupling::CoupledSimulation& s) { (*phase)(s); }});
+  const auto phase_interval_steps =
+      steps_for(settings.check_interval_strain / kPhaseSamplesPerCheck, plan.strain_rate_lu);
+  auto phase = std::make_shared<PhaseRecorder>(tracked_vertex(cell), phase_interval_steps);
+  simulation.add_observer({"tank_treading_point", phase_interval_steps,
+                           [phase](const coupling::CoupledSimulation& s) { (*phase)(s); }});
+  simulation.add_stop_criterion(std::make_unique<PhaseInCheckpoint>(phase));
+  if (hooks.configure) hooks.configure(rate_index, simulation);
 
   ShearPoint point;
   point.plan = plan;
   try {
-    const auto summary = simulation.run();
-    point.stop_reason = summary.stop_reason;
-    point.force_cap_steps = summary.capped_steps_per_cell.at(0);
+    point.stop_reason = simulation.run().stop_reason;
     point.steady = steady;
+  } catch (const Interrupted& interrupted) {
+    point.interrupted = true;
+    point.failure = interrupted.what();
   } catch (const RuntimeFailure& failure) {
     point.failure = failure.what();
   }
+  // From the simulation's counters (restored on resume), not from this run() call's summary.
+  point.force_cap_steps = simulation.capped_steps_per_cell().at(0);
   const auto positions_um = positions_now_um(simulation);
   point.shape = measure_shear_shape(positions_um);
   point.smoothness_rad = smoothness_rad(model, positions_um);
@@ -340,20 +399,42 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
   point.time_s = simulation.time_s() * plan.viscosity_scale;
   point.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  if (point.failure.empty() && observer) observer(rate_index, point, simulation);
+  if (point.failure.empty() && hooks.finished) hooks.finished(rate_index, point, simulation);
   return point;
 }
+
+namespace {
+
+// A rate of a sweep: the point it already has (resume), none if interrupted before it started,
+// or its run.
+ShearPoint sweep_rate(const membrane::MembraneModel& model, const mesh::TriangleMesh& cell,
+                      const ShearEngine& engine, const ShearSettings& settings,
+                      const ShearRatePlan& plan, std::size_t rate_index, const ShearHooks& hooks) {
+  if (rate_index < hooks.completed.size() && hooks.completed[rate_index]) {
+    return *hooks.completed[rate_index];
+  }
+  if (interrupt_requested()) {
+    ShearPoint point;
+    point.plan = plan;
+    point.interrupted = true;
+    point.failure = "interrupted before it started";
+    return point;
+  }
+  return run_shear_rate(model, cell, engine, settings, plan, rate_index, hooks);
+}
+
+}  // namespace
 
 std::vector<ShearPoint> run_shear_sweep(const membrane::MembraneModel& model,
                                         const mesh::TriangleMesh& cell, const ShearEngine& engine,
                                         const ShearSettings& settings,
                                         const std::vector<ShearRatePlan>& plans, int rate_threads,
-                                        const ShearObserver& observer) {
+                                        const ShearHooks& hooks) {
   std::vector<ShearPoint> points(plans.size());
   const auto count = static_cast<int>(plans.size());
   if (rate_threads <= 1 || count <= 1) {
     for (std::size_t i = 0; i < plans.size(); ++i) {
-      points[i] = run_shear_rate(model, cell, engine, settings, plans[i], i, observer);
+      points[i] = sweep_rate(model, cell, engine, settings, plans[i], i, hooks);
     }
     return points;
   }
@@ -365,7 +446,7 @@ std::vector<ShearPoint> run_shear_sweep(const membrane::MembraneModel& model,
     const ThreadCountScope one_thread(1);
     const auto index = static_cast<std::size_t>(i);
     try {
-      points[index] = run_shear_rate(model, cell, engine, settings, plans[index], index, observer);
+      points[index] = sweep_rate(model, cell, engine, settings, plans[index], index, hooks);
     } catch (...) {
       errors[index] = std::current_exception();
     }

@@ -36,6 +36,7 @@
 #include <cstddef>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -67,11 +68,16 @@ struct ShearSettings {
 struct ShearEngine {
   units::LatticeParameters lattice;  // the medium's physical kinematic viscosity
   lattice::FluidParameters fluid;
-  // run_directory: failure dumps of rate i go to <run_directory>/rate_<i>/failure.
+  // run_directory: failure dumps of rate i go to <run_directory>/rate_<i>/failure
+  // (shear_rate_directory).
   coupling::CouplingParameters coupling;
 };
 
 std::vector<std::string> shear_boundary_names();
+
+// "rate_<i>" (three digits at least): rate i's subdirectory of a run directory (failure dumps,
+// checkpoints).
+std::string shear_rate_directory(std::size_t rate_index);
 
 // The box in lattice nodes: x and z periodic, width_diameters cell diameters (the largest vertex
 // distance of `cell`) long; along y the gap of gap_diameters diameters plus the boundary's wall
@@ -133,7 +139,8 @@ struct ShearPoint {
   std::size_t steps = 0;
   std::size_t force_cap_steps = 0;  // steps in which the vertex force cap clamped a vertex
   std::string stop_reason;
-  std::string failure;  // empty unless the run failed (instability): then steady = false
+  std::string failure;       // empty unless the run failed (instability): then steady = false
+  bool interrupted = false;  // Ctrl-C: failure says so; the shape is the one reached
   double wall_time_s = 0.0;
 };
 
@@ -141,20 +148,32 @@ struct ShearPoint {
 using ShearObserver = std::function<void(std::size_t rate_index, const ShearPoint& point,
                                          const coupling::CoupledSimulation& simulation)>;
 
+// What a caller adds to a sweep, all optional: `finished` sees each rate that ended (not failed,
+// not interrupted); `configure` gets each rate's simulation, built, before it runs (checkpoint
+// policy, resume); a rate with a `completed` point (index = rate index) is not run again but
+// reported as that point (a resumed sweep). The tank-treading record and the steady-state
+// checks ride in the rate's checkpoints, so a resumed rate ends as a straight one.
+struct ShearHooks {
+  ShearObserver finished;
+  std::function<void(std::size_t rate_index, coupling::CoupledSimulation& simulation)> configure;
+  std::vector<std::optional<ShearPoint>> completed;
+};
+
 // Runs one rate: builds the fluid and the coupled simulation, runs it to a steady state or
 // max_strain. An instability is recorded in ShearPoint::failure (the dump is written), not
 // thrown.
 ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::TriangleMesh& cell,
                           const ShearEngine& engine, const ShearSettings& settings,
                           const ShearRatePlan& plan, std::size_t rate_index,
-                          const ShearObserver& observer);
+                          const ShearHooks& hooks);
 
 // Every rate, `rate_threads` at a time (each simulation single-threaded then; results are the
-// same as one by one, every phase being deterministic). One point per rate, in order.
+// same as one by one, every phase being deterministic). One point per rate, in order. After an
+// interrupt (common/interrupt.hpp) the rates not yet started are reported interrupted, unrun.
 std::vector<ShearPoint> run_shear_sweep(const membrane::MembraneModel& model,
                                         const mesh::TriangleMesh& cell, const ShearEngine& engine,
                                         const ShearSettings& settings,
                                         const std::vector<ShearRatePlan>& plans, int rate_threads,
-                                        const ShearObserver& observer);
+                                        const ShearHooks& hooks);
 
 }  // namespace rbcsim::cases

@@ -1,6 +1,9 @@
 #include "cases/shear_output.hpp"
 
 #include <cmath>
+#include <limits>
+
+#include "common/errors.hpp"
 
 namespace rbcsim::cases {
 namespace {
@@ -35,7 +38,48 @@ nlohmann::ordered_json rate_entry(const ShearPoint& point) {
   return entry;
 }
 
+// A number of a record; null (written for a non-finite one) reads as NaN.
+double record_number(const nlohmann::json& record, const char* key, const std::string& source) {
+  if (!record.contains(key)) throw InputError(source, std::string("no \"") + key + "\"");
+  const auto& value = record.at(key);
+  if (value.is_null()) return std::numeric_limits<double>::quiet_NaN();
+  if (!value.is_number()) throw InputError(source, std::string("\"") + key + "\" is not a number");
+  return value.get<double>();
+}
+
 }  // namespace
+
+nlohmann::ordered_json shear_point_record(const ShearPoint& point) {
+  auto record = rate_entry(point);
+  record["strain_rate_lu"] = point.plan.strain_rate_lu;
+  return record;
+}
+
+ShearPoint shear_point_from_record(const nlohmann::json& record, const std::string& source) {
+  const auto number = [&](const char* key) { return record_number(record, key, source); };
+  const auto count = [&](const char* key) { return static_cast<std::size_t>(number(key)); };
+  ShearPoint point;
+  auto& plan = point.plan;
+  plan.shear_rate_per_s = number("shear_rate_per_s");
+  plan.simulated_shear_rate_per_s = number("simulated_shear_rate_per_s");
+  plan.simulated_kinematic_viscosity_m2_per_s = number("simulated_kinematic_viscosity_m2_per_s");
+  plan.viscosity_scale = number("viscosity_scale");
+  plan.reynolds_number = number("reynolds_number");
+  plan.capillary_number = number("capillary_number");
+  plan.strain_rate_lu = number("strain_rate_lu");
+  point.shape = {number("length_um"), number("breadth_um"), number("deformation_index"),
+                 number("inclination_deg")};
+  point.tank_treading_hz = number("tank_treading_hz");
+  point.smoothness_rad = number("smoothness_rad");
+  point.steady = record.value("steady", false);
+  point.strain = number("strain");
+  point.time_s = number("time_s");
+  point.steps = count("steps");
+  point.force_cap_steps = count("force_cap_steps");
+  point.stop_reason = record.value("stop_reason", std::string());
+  point.wall_time_s = number("wall_time_s");
+  return point;
+}
 
 std::vector<std::string> shear_table_columns() {
   return {"shear_rate_per_s",

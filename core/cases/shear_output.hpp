@@ -21,4 +21,11 @@ nlohmann::ordered_json shear_result_section(const ShearSettings& settings,
                                             std::span<const std::string> force_terms,
                                             std::span<const ShearPoint> points);
 
+// A finished rate's point as JSON whose numbers read back bit for bit (nlohmann writes the
+// shortest text that round-trips): <run dir>/rate_<i>/point.json, the rates a resumed sweep
+// does not run again. shear_point_from_record throws InputError naming `source` for a record
+// without one of the numbers.
+nlohmann::ordered_json shear_point_record(const ShearPoint& point);
+ShearPoint shear_point_from_record(const nlohmann::json& record, const std::string& source);
+
 }  // namespace rbcsim::cases
