@@ -6,7 +6,10 @@
 // --checkpoint-every and --resume. The coarse sweep of shear_case_test.cpp, one unit of strain.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -32,7 +35,7 @@ using rbcsim::testing::ScratchDirectory;
 // Lees-Edwards and wall-link arithmetic differs from the kernel's in rounding, so a run resumed
 // from an odd step agrees with the straight one only to rounding (found here; also the cause of
 // the capillary's in-process difference, tests/reliability/capillary_resume_test.cpp).
-constexpr std::size_t kInterruptStep = 100;
+constexpr std::size_t kInterruptStep = 180;  // past half the run: tank treading is measured there
 
 // Clears the flag whatever the test does, so later tests in this process are not interrupted.
 struct InterruptScope {
@@ -167,6 +170,31 @@ TEST(ShearResume, ResumeThroughTheBinaryKeepsFinishedRatesAndRewritesTheSameResu
   EXPECT_EQ(resumed_shear["rates"][0]["wall_time_s"], straight_shear["rates"][0]["wall_time_s"]);
   for (auto* shear : {&straight_shear, &resumed_shear}) (*shear)["rates"][1].erase("wall_time_s");
   EXPECT_EQ(resumed_shear, straight_shear);
+  EXPECT_TRUE(std::filesystem::exists(run_dir / "shear.csv"));
+}
+
+// Ctrl-C (here SIGINT after a second, to the command only: --foreground; the cell at 100 1/s,
+// never steady with a tolerance of 1e-12, would run 1000 strains): the rates done so far (none) in
+// result.json with status "interrupted", the interrupted rate's checkpoint, exit code 130.
+TEST(ShearResume, SigintWritesTheRatesDoneSoFarAndACheckpoint) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const std::string command =
+      "timeout --foreground --preserve-status -s INT 1 '" + std::string(RBCSIM_BINARY) +
+      "' shear --quiet --threads 1 --rates 100 --max-strain 1000 --set mesh.subdivisions=3"
+      " --set shear.steady_tolerance_per_strain=1e-12"
+      " --set lattice.spacing_um=1 --set shear.max_reynolds_number=0.4"
+      " --set shear.width_diameters=1.6 --set shear.gap_diameters=2 --output '" +
+      run_dir.string() + "' >/dev/null 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 130);
+  const auto result = nlohmann::json::parse(rbcsim::testing::read_text(run_dir / "result.json"));
+  EXPECT_EQ(result["status"], "interrupted");
+  const auto& rates = result["shear"]["rates"];
+  EXPECT_EQ(rates.size(), 0u);
+  EXPECT_TRUE(
+      std::filesystem::exists(run_dir / shear_rate_directory(0) / coupling::kCheckpointFileName));
   EXPECT_TRUE(std::filesystem::exists(run_dir / "shear.csv"));
 }
 
