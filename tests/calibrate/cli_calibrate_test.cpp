@@ -13,13 +13,11 @@
 namespace {
 
 namespace fs = std::filesystem;
-using rbcsim::testing::read_text;
+using rbcsim::testing::read_json;
 using rbcsim::testing::run_rbcsim;
 using rbcsim::testing::ScratchDirectory;
 
 constexpr const char* kCoarseCell = "--set mesh.subdivisions=2 ";
-
-nlohmann::json read_json(const fs::path& file) { return nlohmann::json::parse(read_text(file)); }
 
 double relative(double value, double expected) {
   return std::abs(value - expected) / std::abs(expected);

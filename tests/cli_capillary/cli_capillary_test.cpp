@@ -16,6 +16,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using rbcsim::testing::read_json;
 using rbcsim::testing::read_text;
 using rbcsim::testing::run_rbcsim;
 using rbcsim::testing::ScratchDirectory;
@@ -28,8 +29,6 @@ constexpr const char* kCoarse =
     "--set membrane.vertex_force_cap_pN=2000 --set capillary.throat_diameter_um=9 "
     "--set capillary.inlet_velocity_m_per_s=0.014 --set capillary.pass_margin_um=2 "
     "--set output.membrane_interval_s=2e-4 --set output.fluid_interval_s=1e-3 ";
-
-nlohmann::json read_json(const fs::path& file) { return nlohmann::json::parse(read_text(file)); }
 
 TEST(CliCapillary, WritesTheRunDirectoryAndPrintsItsResultAsJson) {
   const ScratchDirectory scratch;

@@ -15,6 +15,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using rbcsim::testing::read_json;
 using rbcsim::testing::read_text;
 using rbcsim::testing::run_rbcsim;
 using rbcsim::testing::ScratchDirectory;
@@ -23,8 +24,6 @@ constexpr const char* kCoarseRun =
     "shear --set mesh.subdivisions=3 --set lattice.spacing_um=1 "
     "--set shear.max_reynolds_number=0.4 --set shear.width_diameters=1.6 "
     "--set shear.gap_diameters=2 --max-strain 1 ";
-
-nlohmann::json read_json(const fs::path& file) { return nlohmann::json::parse(read_text(file)); }
 
 TEST(CliShear, WritesTheRunDirectoryAndPrintsItsResultAsJson) {
   const ScratchDirectory scratch;

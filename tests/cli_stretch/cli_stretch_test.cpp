@@ -15,13 +15,12 @@
 namespace {
 
 namespace fs = std::filesystem;
+using rbcsim::testing::read_json;
 using rbcsim::testing::read_text;
 using rbcsim::testing::run_rbcsim;
 using rbcsim::testing::ScratchDirectory;
 
 constexpr const char* kCoarseCell = "--set mesh.subdivisions=2 ";
-
-nlohmann::json read_json(const fs::path& file) { return nlohmann::json::parse(read_text(file)); }
 
 TEST(CliStretch, WritesTheRunDirectoryAndPrintsItsResultAsJson) {
   const ScratchDirectory scratch;

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
 
@@ -23,6 +24,11 @@ inline std::string read_text(const std::filesystem::path& file) {
   std::stringstream text;
   text << stream.rdbuf();
   return text.str();
+}
+
+// A JSON file the binary wrote (result.json, config.json, ...).
+inline nlohmann::json read_json(const std::filesystem::path& file) {
+  return nlohmann::json::parse(read_text(file));
 }
 
 // `arguments` is appended to the binary's path as written, shell quoting included. Output goes
