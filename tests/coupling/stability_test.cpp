@@ -11,6 +11,7 @@
 #include "coupling/coupled_simulation.hpp"
 #include "coupling/stability.hpp"
 #include "coupling_fixtures.hpp"
+#include "support/files.hpp"
 #include "support/scratch_directory.hpp"
 
 namespace rbcsim::coupling {
@@ -20,6 +21,7 @@ using testing::capsule_parameters;
 using testing::couette_fluid;
 using testing::periodic_fluid;
 using testing::plasma_units;
+using rbcsim::testing::read_json;
 using testing::sphere_mesh;
 using testing::stretched;
 
@@ -31,11 +33,6 @@ std::string failure_of(CoupledSimulation& simulation, int max_steps) {
     return failure.what();
   }
   return {};
-}
-
-nlohmann::json read_json(const std::filesystem::path& file) {
-  std::ifstream stream(file);
-  return nlohmann::json::parse(stream);
 }
 
 TEST(Instability, HugeExternalForceStopsTheRunWithStepCellAndDump) {

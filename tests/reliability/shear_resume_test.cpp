@@ -156,7 +156,7 @@ TEST(ShearResume, ResumeThroughTheBinaryKeepsFinishedRatesAndRewritesTheSameResu
   const auto rate_1 = run_dir / shear_rate_directory(1);
   ASSERT_TRUE(std::filesystem::exists(rate_1 / coupling::kCheckpointFileName));
   const auto result_of = [&run_dir] {
-    return nlohmann::json::parse(rbcsim::testing::read_text(run_dir / "result.json"));
+    return rbcsim::testing::read_json(run_dir / "result.json");
   };
   auto straight_shear = result_of()["shear"];
   std::filesystem::remove(run_dir / "result.json");
@@ -189,7 +189,7 @@ TEST(ShearResume, SigintWritesTheRatesDoneSoFarAndACheckpoint) {
   const int status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 130);
-  const auto result = nlohmann::json::parse(rbcsim::testing::read_text(run_dir / "result.json"));
+  const auto result = rbcsim::testing::read_json(run_dir / "result.json");
   EXPECT_EQ(result["status"], "interrupted");
   const auto& rates = result["shear"]["rates"];
   EXPECT_EQ(rates.size(), 0u);

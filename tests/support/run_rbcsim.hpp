@@ -6,10 +6,9 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
+
+#include "support/files.hpp"
 
 namespace rbcsim::testing {
 
@@ -18,18 +17,6 @@ struct RunResult {
   std::string out;  // stdout
   std::string err;  // stderr
 };
-
-inline std::string read_text(const std::filesystem::path& file) {
-  std::ifstream stream(file, std::ios::binary);
-  std::stringstream text;
-  text << stream.rdbuf();
-  return text.str();
-}
-
-// A JSON file the binary wrote (result.json, config.json, ...).
-inline nlohmann::json read_json(const std::filesystem::path& file) {
-  return nlohmann::json::parse(read_text(file));
-}
 
 // `arguments` is appended to the binary's path as written, shell quoting included. Output goes
 // through files in `scratch` (a directory the test owns).

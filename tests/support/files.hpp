@@ -1,0 +1,24 @@
+// Reading what a test or the binary wrote: whole files as text or JSON.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+namespace rbcsim::testing {
+
+inline std::string read_text(const std::filesystem::path& file) {
+  std::ifstream stream(file, std::ios::binary);
+  std::stringstream text;
+  text << stream.rdbuf();
+  return text.str();
+}
+
+// A JSON file the binary wrote (result.json, config.json, ...).
+inline nlohmann::json read_json(const std::filesystem::path& file) {
+  return nlohmann::json::parse(read_text(file));
+}
+
+}  // namespace rbcsim::testing
