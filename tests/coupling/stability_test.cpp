@@ -17,11 +17,11 @@
 namespace rbcsim::coupling {
 namespace {
 
+using rbcsim::testing::read_json;
 using testing::capsule_parameters;
 using testing::couette_fluid;
 using testing::periodic_fluid;
 using testing::plasma_units;
-using rbcsim::testing::read_json;
 using testing::sphere_mesh;
 using testing::stretched;
 
