@@ -11,10 +11,10 @@ repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build_dir="${1:-$repo_root/build}"
 shift || true
 
-# libexpat1-dev / libxml2-dev: the report and coupling tests read their HTML and VTK output back
-# with strict XML parsers.
+# libexpat1-dev: the report and coupling tests read their HTML and VTK output back with a strict
+# XML parser.
 required_packages=(cmake make g++ libcli11-dev libeigen3-dev nlohmann-json3-dev libassimp-dev
-                   libgtest-dev libexpat1-dev libxml2-dev)
+                   libgtest-dev libexpat1-dev)
 read -r -a extra_packages <<<"${RBCSIM_EXTRA_PACKAGES:-}"
 required_packages+=("${extra_packages[@]}")
 

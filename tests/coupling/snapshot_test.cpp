@@ -1,8 +1,6 @@
 // ParaView output: the files a run writes parse as XML, carry the arrays the design names, in SI
 // units, and the .pvd collections list them with their times.
 #include <gtest/gtest.h>
-#include <libxml/parser.h>
-#include <libxml/tree.h>
 
 #include <map>
 #include <memory>
@@ -11,8 +9,10 @@
 #include "coupling/coupled_simulation.hpp"
 #include "coupling/snapshot.hpp"
 #include "coupling_fixtures.hpp"
+#include "support/files.hpp"
 #include "support/scratch_directory.hpp"
 #include "support/vtk_base64.hpp"
+#include "support/xml_document.hpp"
 
 namespace rbcsim::coupling {
 namespace {
@@ -22,62 +22,29 @@ using testing::plasma_units;
 using testing::sphere_mesh;
 using testing::stretched;
 
-struct XmlDocumentDeleter {
-  void operator()(xmlDoc* document) const { xmlFreeDoc(document); }
-};
-using XmlDocument = std::unique_ptr<xmlDoc, XmlDocumentDeleter>;
-
-std::string attribute(const xmlNode* node, const char* name) {
-  xmlChar* value = xmlGetProp(node, reinterpret_cast<const xmlChar*>(name));
-  if (value == nullptr) return {};
-  std::string text(reinterpret_cast<const char*>(value));
-  xmlFree(value);
-  return text;
-}
-
-std::string content(const xmlNode* node) {
-  xmlChar* value = xmlNodeGetContent(node);
-  std::string text(reinterpret_cast<const char*>(value));
-  xmlFree(value);
-  return text;
-}
-
-bool named(const xmlNode* node, const char* name) {
-  return node->type == XML_ELEMENT_NODE &&
-         xmlStrcmp(node->name, reinterpret_cast<const xmlChar*>(name)) == 0;
-}
-
-// A VTK XML file read with libxml2: its root element and every DataArray by Name.
+// A VTK XML file parsed strictly (fails the test unless well-formed), its root element and every
+// DataArray by Name.
 struct VtkFile {
-  XmlDocument document;
-  const xmlNode* root = nullptr;
-  std::map<std::string, const xmlNode*> arrays;
+  rbcsim::testing::XmlDocument document;
+  std::map<std::string, std::size_t> arrays;  // Name -> index in document.elements
 
-  const xmlNode* array(const std::string& name) const {
+  const rbcsim::testing::XmlElement& root() const { return document.elements.front(); }
+  std::string array_text(const std::string& name) const {
     const auto found = arrays.find(name);
     EXPECT_NE(found, arrays.end()) << "no DataArray " << name;
-    return found == arrays.end() ? nullptr : found->second;
+    return found == arrays.end() ? "" : document.elements[found->second].text;
   }
   std::vector<double> doubles(const std::string& name) const {
-    return rbcsim::testing::decode_vtk_binary<double>(content(array(name)));
+    return rbcsim::testing::decode_vtk_binary<double>(array_text(name));
   }
 };
 
-void collect_arrays(const xmlNode* node, VtkFile& file) {
-  for (; node != nullptr; node = node->next) {
-    if (named(node, "DataArray")) file.arrays[attribute(node, "Name")] = node;
-    collect_arrays(node->children, file);
-  }
-}
-
-// Fails the test unless the file is well-formed XML.
 VtkFile read_vtk(const std::filesystem::path& path) {
-  VtkFile file;
-  file.document.reset(xmlReadFile(path.c_str(), nullptr, XML_PARSE_NONET | XML_PARSE_HUGE));
-  EXPECT_TRUE(file.document) << path << " is not well-formed XML";
-  if (!file.document) return file;
-  file.root = xmlDocGetRootElement(file.document.get());
-  collect_arrays(file.root, file);
+  VtkFile file{rbcsim::testing::parse_xml(rbcsim::testing::read_text(path)), {}};
+  EXPECT_EQ(file.document.error, "") << path << " is not well-formed XML";
+  for (const auto i : file.document.find("DataArray")) {
+    file.arrays[file.document.elements[i].attribute("Name")] = i;
+  }
   return file;
 }
 
@@ -103,9 +70,9 @@ TEST(Snapshots, MembraneFileHasEveryForceTermTheTotalsAndTheVelocityInSI) {
   const ShearedCapsuleRun run;
   const auto& simulation = *run.simulation;
   const auto file = read_vtk(run.scratch.path() / "vtk" / "cell0_000000005.vtp");
-  ASSERT_TRUE(file.root);
-  EXPECT_EQ(attribute(file.root, "type"), "PolyData");
-  EXPECT_EQ(attribute(file.root, "header_type"), "UInt64");
+  ASSERT_FALSE(file.document.elements.empty());
+  EXPECT_EQ(file.root().attribute("type"), "PolyData");
+  EXPECT_EQ(file.root().attribute("header_type"), "UInt64");
   const Cell& cell = simulation.cell(0);
   for (const auto& term : cell.membrane_forces().terms) {
     const auto values = file.doubles("force_" + term.name + "_pN");
@@ -116,8 +83,8 @@ TEST(Snapshots, MembraneFileHasEveryForceTermTheTotalsAndTheVelocityInSI) {
   const auto total = file.doubles("total_force_pN");
   ASSERT_EQ(total.size(), 3 * cell.vertex_count());
   EXPECT_EQ(total[5], cell.total_forces_pN()[1].z());
-  file.array("membrane_force_pN");
-  file.array("external_force_pN");
+  file.array_text("membrane_force_pN");
+  file.array_text("external_force_pN");
   // Velocity in m/s: lattice velocity times dx / dt.
   const double dx_per_dt = 0.5e-6 / plasma_units().dt_s();
   const auto velocity = file.doubles("velocity_m_per_s");
@@ -132,15 +99,14 @@ TEST(Snapshots, FluidFileHasVelocityDensityAndSolidMaskOnTheLattice) {
   const ShearedCapsuleRun run;
   const auto& fluid = run.simulation->fluid();
   const auto file = read_vtk(run.scratch.path() / "vtk" / "fluid_000000004.vti");
-  ASSERT_TRUE(file.root);
-  EXPECT_EQ(attribute(file.root, "type"), "ImageData");
-  const xmlNode* image = file.root->children;
-  while (image != nullptr && !named(image, "ImageData")) image = image->next;
-  ASSERT_NE(image, nullptr);
-  EXPECT_EQ(attribute(image, "WholeExtent"), "0 9 0 11 0 7");
-  EXPECT_EQ(attribute(image, "Spacing"), "0.5 0.5 0.5");
-  const auto mask =
-      rbcsim::testing::decode_vtk_binary<std::uint8_t>(content(file.array("solid_mask")));
+  ASSERT_FALSE(file.document.elements.empty());
+  EXPECT_EQ(file.root().attribute("type"), "ImageData");
+  const auto images = file.document.find("ImageData", "", 0);
+  ASSERT_EQ(images.size(), 1u);
+  const auto& image = file.document.elements[images.front()];
+  EXPECT_EQ(image.attribute("WholeExtent"), "0 9 0 11 0 7");
+  EXPECT_EQ(image.attribute("Spacing"), "0.5 0.5 0.5");
+  const auto mask = rbcsim::testing::decode_vtk_binary<std::uint8_t>(file.array_text("solid_mask"));
   EXPECT_EQ(mask, fluid.solid_mask());
   // Written at step 4, read after step 5: only the shape and units are compared.
   const auto density = file.doubles("density_kg_per_m3");
@@ -159,14 +125,12 @@ TEST(Snapshots, CollectionsListEverySnapshotWithItsTimeAndNoTemporaryFilesRemain
   const ShearedCapsuleRun run;
   const double dt_s = plasma_units().dt_s();
   const auto cells = read_vtk(run.scratch.path() / "cell0.pvd");
-  ASSERT_TRUE(cells.root);
+  ASSERT_FALSE(cells.document.elements.empty());
   std::vector<std::pair<std::string, double>> entries;
-  for (const xmlNode* node = cells.root->children; node != nullptr; node = node->next) {
-    if (!named(node, "Collection")) continue;
-    for (const xmlNode* set = node->children; set != nullptr; set = set->next) {
-      if (named(set, "DataSet")) {
-        entries.emplace_back(attribute(set, "file"), std::stod(attribute(set, "timestep")));
-      }
+  for (const auto collection : cells.document.find("Collection", "", 0)) {
+    for (const auto i : cells.document.find("DataSet", "", static_cast<long>(collection))) {
+      const auto& set = cells.document.elements[i];
+      entries.emplace_back(set.attribute("file"), std::stod(set.attribute("timestep")));
     }
   }
   // Initial state, every 2 steps, and the final state (step 5).

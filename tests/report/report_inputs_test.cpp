@@ -5,7 +5,7 @@
 #include "common/errors.hpp"
 #include "report/report.hpp"
 #include "report/run_fixtures.hpp"
-#include "report/xml_document.hpp"
+#include "support/xml_document.hpp"
 #include "support/run_rbcsim.hpp"
 #include "support/scratch_directory.hpp"
 

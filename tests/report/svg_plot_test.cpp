@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "report/xml_document.hpp"
+#include "support/xml_document.hpp"
 
 namespace {
 

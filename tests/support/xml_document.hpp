@@ -1,5 +1,6 @@
-// A strict XML parse of the report's output (expat), for tests: well-formedness, and the elements
-// with their attributes and text, to find plots, series and labels by structure, not by regex.
+// A strict XML parse (expat) of what rbcsim writes (the report, VTK files), for tests:
+// well-formedness, and the elements with their attributes and text, to find plots, series and
+// labels by structure, not by regex.
 #pragma once
 
 #include <expat.h>
