@@ -22,6 +22,7 @@ namespace rbcsim::coupling {
 namespace {
 
 using rbcsim::testing::ScratchDirectory;
+using testing::lees_edwards_fluid;
 using testing::plasma_units;
 using testing::sphere_mesh;
 using testing::stretched;
@@ -35,10 +36,7 @@ constexpr const char* kFingerprint = "config sha256 of the test";
 // images, so it must be restored too), advanced with AB2 (a velocity history), stopped by time
 // with two criteria that remember something.
 std::unique_ptr<CoupledSimulation> sheared_capsule(int nx = 20) {
-  lattice::FluidParameters fluid_parameters;
-  fluid_parameters.lees_edwards_velocity = 0.02;
-  auto fluid =
-      std::make_unique<lattice::FluidSolver>(lattice::LatticeGrid(nx, 18, 16), fluid_parameters);
+  auto fluid = lees_edwards_fluid(nx, 18, 16, 0.02);
   CouplingParameters parameters;
   parameters.point_advance = "ab2";
   auto simulation =
