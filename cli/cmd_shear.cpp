@@ -217,6 +217,7 @@ void run_shear_command(const ShearOptions& options) {
 
   const RunDirectory directory("shear", options.common, config);
   const auto engine = setup::shear_engine_from(config, directory.path());
+  setup::require_cell_fits_shear_box(cell, settings, engine);
   const auto plans = cases::plan_shear_rates(model, cell, engine, settings);
   cases::ShearHooks hooks;
   hooks.completed = completed_points(options, config, plans.size());

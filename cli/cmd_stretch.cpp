@@ -163,6 +163,7 @@ void run_stretch_command(const StretchOptions& options) {
   for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
   const auto cell = cases::prepare_stretch_cell(cell_mesh.mesh, settings.contact);
   const membrane::MembraneModel model(cell.mesh, parameters);
+  setup::require_cell_fits_stretch_box(cell.mesh, settings);
 
   const RunDirectory directory("stretch", options.common, config);
   directory.start(config, cell_mesh);

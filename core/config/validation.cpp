@@ -1,7 +1,9 @@
 #include "config/validation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <limits>
 
@@ -175,6 +177,15 @@ void validate_node(const json& node, const std::string& group, std::string_view 
   }
 }
 
+// A size in a diagnostic to 4 significant digits: cell extents are computed from the vertices
+// ("7.82", not "7.819999999983796").
+std::string format_size_um(double size_um) {
+  std::array<char, 32> buffer{};
+  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), size_um,
+                                    std::chars_format::general, 4);
+  return std::string(buffer.data(), result.ptr) + " um";
+}
+
 }  // namespace
 
 std::optional<std::string> value_problem(const Option& option, const json& value) {
@@ -237,17 +248,17 @@ std::optional<std::string> closest_known_path(std::string_view path) {
 
 void require_cell_fits_domain(const std::array<double, 3>& cell_extent_um,
                               const std::array<double, 3>& domain_extent_um, double spacing_um,
-                              std::string_view what) {
-  const double clearance_um = 2.0 * kCellClearanceSpacings * spacing_um;
+                              double clearance_spacings, std::string_view what) {
+  const double clearance_um = 2.0 * clearance_spacings * spacing_um;
   for (std::size_t axis = 0; axis < 3; ++axis) {
     if (cell_extent_um[axis] + clearance_um <= domain_extent_um[axis]) continue;
-    throw InputError(std::string(what),
-                     std::string("the cell does not fit the domain along ") + "xyz"[axis] + ": " +
-                         format_number(cell_extent_um[axis]) + " um of cell plus " +
-                         format_number(clearance_um) + " um of clearance (" +
-                         format_number(kCellClearanceSpacings) +
-                         " lattice spacings per side) exceed the domain's " +
-                         format_number(domain_extent_um[axis]) + " um");
+    throw InputError(std::string(what), std::string("the cell does not fit the domain along ") +
+                                            "xyz"[axis] + ": " +
+                                            format_size_um(cell_extent_um[axis]) +
+                                            " of cell plus " + format_size_um(clearance_um) +
+                                            " of clearance (" + format_number(clearance_spacings) +
+                                            " lattice spacings per side) exceed the domain's " +
+                                            format_size_um(domain_extent_um[axis]));
   }
 }
 

@@ -30,16 +30,13 @@ std::optional<std::string> closest_match(std::string_view word,
 // known key put in the wrong group ("k_bend_kBT" -> "membrane.k_bend_kBT").
 std::optional<std::string> closest_known_path(std::string_view path);
 
-// How many lattice spacings of fluid the immersed boundary needs between a cell and the domain's
-// boundary on each side: the widest delta kernel (phi4) reaches 2 nodes.
-inline constexpr double kCellClearanceSpacings = 2.0;
-
 // "Cell larger than the domain" (DESIGN.md §6), checked before a run is set up: along each axis,
-// the cell's extent plus kCellClearanceSpacings * spacing_um on both sides must fit in the
-// domain's extent (a capillary: its diameter across, a shear box: its height). Throws
-// InputError(what, ...) naming the axis and both sizes.
+// the cell's extent plus clearance_spacings * spacing_um on both sides must fit in the domain's
+// extent (a periodic box: its length, so that the cell's kernel support stays clear of its
+// image's; between walls: the gap). The clearance is the immersed-boundary kernel's reach,
+// support_width / 2 (phi2: 1, phi4: 2). Throws InputError(what, ...) naming the axis and the sizes.
 void require_cell_fits_domain(const std::array<double, 3>& cell_extent_um,
                               const std::array<double, 3>& domain_extent_um, double spacing_um,
-                              std::string_view what);
+                              double clearance_spacings, std::string_view what);
 
 }  // namespace rbcsim::config

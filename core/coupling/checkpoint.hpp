@@ -7,10 +7,11 @@
 //   uint32 array count, then per array (in name order):
 //     uint32 n, n bytes name;  uint64 count;  count float64 values
 //   64 bytes                          SHA-256 of everything above, hex digits
-// The arrays are CoupledSimulation::save_state's (common/state_archive.hpp): fluid populations in
-// natural layout, density, velocity, step counts, every cell's positions and point-advance
-// history, the force-cap monitors and the stop criteria's memory. Written atomically
-// (io/atomic_file.hpp); a kill during the write leaves the previous checkpoint intact.
+// The arrays are CoupledSimulation::save_state's (common/state_archive.hpp): fluid populations as
+// the kernel holds them and their layout (natural or AA-swapped), density, velocity, step counts,
+// every cell's positions and point-advance history, the force-cap monitors and the stop criteria's
+// memory. Written atomically (io/atomic_file.hpp); a kill during the write leaves the previous
+// checkpoint intact.
 //
 // Reading refuses (InputError, exit 2, one line naming the file) a file that is not a
 // checkpoint, of another version, truncated or corrupted (checksum), written under another
@@ -26,7 +27,8 @@ namespace rbcsim::coupling {
 
 class CoupledSimulation;
 
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+// Version 2: the populations are stored in the kernel's layout (version 1: streamed to natural).
+inline constexpr std::uint32_t kCheckpointVersion = 2;
 inline constexpr const char* kCheckpointFileName = "checkpoint.bin";
 
 void write_checkpoint(const std::filesystem::path& file, const CoupledSimulation& simulation,

@@ -293,10 +293,21 @@ namespace {
 
 std::string velocity_array_name(int axis) { return std::string("fluid.velocity_") + "xyz"[axis]; }
 
+PopulationLayout population_layout_from(StateArchive& archive) {
+  const double code = archive.take_number("fluid.layout");
+  if (code == 0.0) return PopulationLayout::natural;
+  if (code == 1.0) return PopulationLayout::swapped;
+  throw InputError(archive.source(), "fluid.layout must be 0 (natural) or 1 (swapped)");
+}
+
 }  // namespace
 
+// The population array is saved as the kernel holds it, with its layout, and restored as is:
+// streaming a swapped (post-collision, AA) array here would round differently from the kernel's
+// own next step at Lees-Edwards and wall links, and the resumed run would agree only to rounding.
 void FluidSolver::save_state(StateArchive& archive) const {
-  archive.put("fluid.populations", pre_collision_populations());
+  archive.put("fluid.populations", arrays_.populations);
+  archive.put("fluid.layout", {arrays_.layout == PopulationLayout::swapped ? 1.0 : 0.0});
   archive.put("fluid.density", arrays_.density);
   for (int axis = 0; axis < 3; ++axis) {
     archive.put(velocity_array_name(axis), arrays_.velocity[axis]);
@@ -307,7 +318,7 @@ void FluidSolver::save_state(StateArchive& archive) const {
 void FluidSolver::restore_state(StateArchive& archive) {
   const std::size_t node_count = grid().node_count();
   arrays_.populations = archive.take("fluid.populations", kDirections * node_count);
-  arrays_.layout = PopulationLayout::natural;
+  arrays_.layout = population_layout_from(archive);
   arrays_.density = archive.take("fluid.density", node_count);
   for (int axis = 0; axis < 3; ++axis) {
     arrays_.velocity[axis] = archive.take(velocity_array_name(axis), node_count);

@@ -131,10 +131,12 @@ class FluidSolver {
   // Pre-collision populations in natural layout, whatever the kernel's current layout.
   std::vector<double> pre_collision_populations() const;
 
-  // Checkpoints (common/state_archive.hpp): the populations in natural layout, the density and
-  // velocity of the latest collision, and the step count (the Lees-Edwards offset follows it).
-  // The geometry is not saved: restore into a solver set up the same way. restore_state throws
-  // InputError (naming the archive) when an array's size does not fit this grid.
+  // Checkpoints (common/state_archive.hpp): the populations as the kernel holds them and their
+  // layout, the density and velocity of the latest collision, and the step count (the
+  // Lees-Edwards offset follows it). Restored as is, so a resumed run is bit-identical after any
+  // step count. The geometry is not saved: restore into a solver set up the same way (same
+  // kernel). restore_state throws InputError (naming the archive) when an array's size does not
+  // fit this grid or the layout is unknown.
   void save_state(StateArchive& archive) const;
   void restore_state(StateArchive& archive);
 

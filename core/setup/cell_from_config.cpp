@@ -3,6 +3,9 @@
 #include <array>
 #include <utility>
 
+#include "cases/capillary_observables.hpp"
+#include "config/validation.hpp"
+#include "ibm/delta_kernels.hpp"
 #include "mesh/import.hpp"
 
 namespace rbcsim::setup {
@@ -64,6 +67,17 @@ CellMesh cell_mesh_from(const config::Config& config) {
   return {mesh::generate_cell(shape, level, cell_shape_parameters_from(config)),
           "built-in " + shape + " level " + std::to_string(level),
           {}};
+}
+
+void require_cell_fits_domain(const mesh::TriangleMesh& cell, const Vec3& domain_extent_um,
+                              double spacing_um, std::string_view ibm_kernel,
+                              std::string_view what) {
+  const double reach_spacings = 0.5 * ibm::find_delta_kernel(ibm_kernel).support_width;
+  const Vec3 cell_extent_um = cases::vertex_extents(cell.positions_um);
+  config::require_cell_fits_domain(
+      {cell_extent_um.x(), cell_extent_um.y(), cell_extent_um.z()},
+      {domain_extent_um.x(), domain_extent_um.y(), domain_extent_um.z()}, spacing_um,
+      reach_spacings, what);
 }
 
 }  // namespace rbcsim::setup

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "common/vec3.hpp"
 #include "config/config.hpp"
 #include "mesh/cell_shapes.hpp"
 
@@ -21,5 +23,13 @@ struct CellMesh {
 
 // Throws rbcsim::InputError for an unreadable or defective mesh file.
 CellMesh cell_mesh_from(const config::Config& config);
+
+// "Cell larger than the domain" (config::require_cell_fits_domain) for `cell` as placed, against
+// a fluid domain of `domain_extent_um` per axis, with the reach of the delta kernel named
+// `ibm_kernel` as clearance: InputError(what, ...) naming the axis and the sizes in um.
+// Experiment commands call it before they make their run directory.
+void require_cell_fits_domain(const mesh::TriangleMesh& cell, const Vec3& domain_extent_um,
+                              double spacing_um, std::string_view ibm_kernel,
+                              std::string_view what);
 
 }  // namespace rbcsim::setup

@@ -4,7 +4,9 @@
 #include <string>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "config/range.hpp"
+#include "setup/cell_from_config.hpp"
 #include "setup/coupling_from_config.hpp"
 
 namespace rbcsim::setup {
@@ -47,6 +49,18 @@ cases::ShearEngine shear_engine_from(const config::Config& config,
   engine.fluid = fluid_parameters_from(config);
   engine.coupling = coupling_parameters_from(config, run_directory);
   return engine;
+}
+
+void require_cell_fits_shear_box(const mesh::TriangleMesh& cell,
+                                 const cases::ShearSettings& settings,
+                                 const cases::ShearEngine& engine) {
+  const double spacing_um = engine.lattice.spacing_um;
+  const auto box = cases::shear_box(cell, spacing_um, settings);
+  const Vec3 fluid_extent_um = spacing_um * Vec3(box.nx, box.gap_nodes(), box.nz);
+  require_cell_fits_domain(cell, fluid_extent_um, spacing_um, engine.coupling.kernel,
+                           "shear box (shear.width_diameters, shear.gap_diameters, "
+                           "lattice.spacing_um = " +
+                               format_number(spacing_um) + " um)");
 }
 
 }  // namespace rbcsim::setup

@@ -18,6 +18,13 @@ std::vector<double> shear_rates_from(std::string_view text, std::string_view sou
 // Throws InputError for bad shear.rates_per_s.
 cases::ShearSettings shear_settings_from(const config::Config& config);
 
+// "Cell larger than the domain": `cell` (in the shear frame) against the box of
+// cases::shear_box, periodic lengths along x and z, the gap along y. InputError naming the box's
+// options and the sizes in um.
+void require_cell_fits_shear_box(const mesh::TriangleMesh& cell,
+                                 const cases::ShearSettings& settings,
+                                 const cases::ShearEngine& engine);
+
 // Failure dumps of each rate go below run_directory (empty: none).
 cases::ShearEngine shear_engine_from(const config::Config& config,
                                      const std::filesystem::path& run_directory);

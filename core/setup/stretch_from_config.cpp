@@ -4,9 +4,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "cases/fluid_stretch.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "config/embedded_share.hpp"
 #include "config/range.hpp"
+#include "setup/cell_from_config.hpp"
 #include "setup/coupling_from_config.hpp"
 
 namespace rbcsim::setup {
@@ -73,6 +76,18 @@ cases::StretchSettings stretch_settings_from(const config::Config& config) {
       static_cast<std::size_t>(config.integer("stretch.quasi_static.max_iterations"));
   settings.fluid = fluid_stretch_settings_from(config);
   return settings;
+}
+
+void require_cell_fits_stretch_box(const mesh::TriangleMesh& cell,
+                                   const cases::StretchSettings& settings) {
+  if (settings.mode != "fluid") return;  // the quasi-static mode has no fluid domain
+  const double spacing_um = settings.fluid.lattice.spacing_um;
+  const auto box = cases::stretch_box(cell.positions_um, spacing_um, settings.fluid.box_margin_um);
+  const Vec3 fluid_extent_um = spacing_um * Vec3(box.nodes[0], box.nodes[1], box.nodes[2]);
+  require_cell_fits_domain(
+      cell, fluid_extent_um, spacing_um, settings.fluid.coupling.kernel,
+      "stretch box (stretch.fluid.box_margin_um = " + format_number(settings.fluid.box_margin_um) +
+          " um, lattice.spacing_um = " + format_number(spacing_um) + " um)");
 }
 
 }  // namespace rbcsim::setup

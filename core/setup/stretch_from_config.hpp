@@ -27,4 +27,10 @@ std::vector<double> stretch_forces_from(std::string_view text, std::string_view 
 // the run directory is the caller's.
 cases::StretchSettings stretch_settings_from(const config::Config& config);
 
+// "Cell larger than the domain" for the fluid mode: the resting `cell` (prepared for the stretch)
+// against its periodic box (cases::stretch_box). InputError naming stretch.fluid.box_margin_um
+// and lattice.spacing_um and the sizes in um; nothing to check in the quasi-static mode.
+void require_cell_fits_stretch_box(const mesh::TriangleMesh& cell,
+                                   const cases::StretchSettings& settings);
+
 }  // namespace rbcsim::setup

@@ -42,6 +42,15 @@ inline std::unique_ptr<lattice::FluidSolver> periodic_fluid(int nx, int ny, int 
                                                 lattice::FluidParameters{});
 }
 
+// A box of fluid at rest, periodic in x and z, with a Lees-Edwards sliding plane in y whose
+// images move at velocity_difference (lattice units) relative to the box: simple shear.
+inline std::unique_ptr<lattice::FluidSolver> lees_edwards_fluid(int nx, int ny, int nz,
+                                                                double velocity_difference) {
+  lattice::FluidParameters parameters;
+  parameters.lees_edwards_velocity = velocity_difference;
+  return std::make_unique<lattice::FluidSolver>(lattice::LatticeGrid(nx, ny, nz), parameters);
+}
+
 // Wall nodes in the planes y = 0 and y = ny - 1 (half-way walls at y = 1/2 and y = ny - 3/2),
 // moving at -wall_speed and +wall_speed along x: Couette flow with zero velocity mid-gap.
 inline std::unique_ptr<lattice::FluidSolver> couette_fluid(int nx, int ny, int nz,

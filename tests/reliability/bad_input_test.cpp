@@ -116,6 +116,15 @@ class BadInput : public ::testing::Test {
     EXPECT_FALSE(fs::exists(run_dir));
   }
 
+  // An experiment command refused before it makes its run directory.
+  void expect_run_refused(const std::string& arguments, const std::string& named,
+                          const std::string& problem) const {
+    const auto run_dir = scratch_.path() / "run";
+    expect_refused(arguments + " --quiet --threads 1 --output '" + run_dir.string() + "'", named,
+                   problem);
+    EXPECT_FALSE(fs::exists(run_dir));
+  }
+
   void expect_refused(const std::string& arguments, const fs::path& named,
                       const std::string& problem) const {
     const auto result = run_rbcsim(arguments, scratch_.path());
@@ -268,6 +277,36 @@ TEST_F(BadInput, RelaxationTimeAtTheStabilityLimit) {
 TEST_F(BadInput, OutOfRangeValue) {
   expect_config_refused(write("range.json", R"({"mesh": {"subdivisions": -3}})"),
                         "mesh.subdivisions");
+}
+
+// "Cell larger than the domain": the cell plus the IBM kernel's reach (phi2: 1 lattice spacing,
+// phi4: 2) on each side must fit the periodic box or the lumen. The 7.82 um discocyte.
+TEST_F(BadInput, ShearBoxTooSmallForTheCellAndTheKernel) {
+  // dx = 4 um: a 4-node (16 um) box along x holds 7.82 + 2 x 2 x 4 um with phi4 only.
+  expect_run_refused(
+      "shear --rates 500 --set mesh.subdivisions=2 --set lattice.spacing_um=4 "
+      "--set ibm.kernel=phi4",
+      "shear box",
+      "the cell does not fit the domain along x: 7.82 um of cell plus 16 um of "
+      "clearance (2 lattice spacings per side) exceed the domain's 16 um");
+  // phi2, dx = 0.5 um: 1.05 diameters (17 nodes, 8.5 um) are less than 7.82 + 2 x 0.5 um.
+  expect_run_refused("shear --rates 500 --set mesh.subdivisions=2 --set shear.width_diameters=1.05",
+                     "shear box", "does not fit the domain along x");
+}
+
+TEST_F(BadInput, FluidStretchBoxTooSmallForTheCellAndTheKernel) {
+  // dx = 2 um, margin 0.5 um: 5 nodes (10 um) across y, less than 7.82 + 2 x 2 um (phi2).
+  expect_run_refused(
+      "stretch --mode fluid --forces 0 --set mesh.subdivisions=1 --set lattice.spacing_um=2 "
+      "--set stretch.fluid.box_margin_um=0.5",
+      "stretch.fluid.box_margin_um", "the cell does not fit the domain along y");
+}
+
+TEST_F(BadInput, CapillaryLumenTooNarrowForTheCell) {  // the capillary's own check, before settling
+  expect_run_refused(
+      "capillary --set mesh.subdivisions=2 --set lattice.spacing_um=1 "
+      "--set mesh.discocyte.radius_um=8",
+      "capillary.release_gap_um", "the released cell does not fit in the lumen");
 }
 
 }  // namespace

@@ -29,13 +29,9 @@ namespace {
 
 using rbcsim::testing::ScratchDirectory;
 
-// Rate 1 (500 1/s) takes about 230 steps. An even step: the optimised fluid kernel alternates a
-// collide-only step (natural -> swapped layout) and a stream-and-collide step; after an odd count
-// the checkpoint stores the populations streamed by FluidSolver::pre_collision_populations, whose
-// Lees-Edwards and wall-link arithmetic differs from the kernel's in rounding, so a run resumed
-// from an odd step agrees with the straight one only to rounding (found here; also the cause of
-// the capillary's in-process difference, tests/reliability/capillary_resume_test.cpp).
-constexpr std::size_t kInterruptStep = 180;  // past half the run: tank treading is measured there
+// Rate 1 (500 1/s) takes about 230 steps. An odd step: the optimised fluid kernel then holds its
+// populations post-collision in the swapped (AA) layout, which the checkpoint restores as is.
+constexpr std::size_t kInterruptStep = 181;  // past half the run: tank treading is measured there
 
 // Clears the flag whatever the test does, so later tests in this process are not interrupted.
 struct InterruptScope {
@@ -141,7 +137,8 @@ TEST(ShearResume, InterruptedSweepResumesToTheStraightSweep) {
 // Through the binary: a straight run with --checkpoint-every leaves each rate's last checkpoint
 // and point.json. Taking rate 1's point.json away makes it a rate interrupted at its last
 // checkpoint; --resume keeps rate 0 (not run again: its wall time is the first run's) and runs
-// rate 1's last steps again, rewriting the same results.
+// rate 1's last steps again, rewriting the same results (rate 1 ends at step 230; its last
+// checkpoint is at step 219, odd).
 TEST(ShearResume, ResumeThroughTheBinaryKeepsFinishedRatesAndRewritesTheSameResults) {
   const ScratchDirectory scratch;
   const std::string settings =
@@ -150,14 +147,11 @@ TEST(ShearResume, ResumeThroughTheBinaryKeepsFinishedRatesAndRewritesTheSameResu
       " --set shear.width_diameters=1.6 --set shear.gap_diameters=2";
   const auto run_dir = scratch.path() / "run";
   const auto straight = rbcsim::testing::run_rbcsim(
-      "shear --checkpoint-every 100 --output '" + run_dir.string() + "'" + settings,
-      scratch.path());
+      "shear --checkpoint-every 73 --output '" + run_dir.string() + "'" + settings, scratch.path());
   ASSERT_EQ(straight.exit_code, 0) << straight.err;
   const auto rate_1 = run_dir / shear_rate_directory(1);
   ASSERT_TRUE(std::filesystem::exists(rate_1 / coupling::kCheckpointFileName));
-  const auto result_of = [&run_dir] {
-    return rbcsim::testing::read_json(run_dir / "result.json");
-  };
+  const auto result_of = [&run_dir] { return rbcsim::testing::read_json(run_dir / "result.json"); };
   auto straight_shear = result_of()["shear"];
   std::filesystem::remove(run_dir / "result.json");
   std::filesystem::remove(run_dir / "shear.csv");
