@@ -81,6 +81,12 @@ ContactPatches select_contact_patches(std::span<const Vec3> positions_um,
   return patches;
 }
 
+std::vector<std::vector<std::int32_t>> rigid_contact_groups(const ContactPatches& patches,
+                                                            const ContactSettings& settings) {
+  if (!settings.rigid) return {};
+  return {patches.positive_end, patches.negative_end};
+}
+
 std::vector<Vec3> tweezer_forces_pN(std::size_t vertex_count, const ContactPatches& patches,
                                     double force_pN) {
   std::vector<Vec3> forces(vertex_count, Vec3::Zero());

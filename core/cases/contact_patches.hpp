@@ -24,6 +24,12 @@ struct ContactSettings {
   std::string rule = "contact-diameter";
   double diameter_um = 2.0;      // "contact-diameter"
   int extreme_vertex_count = 7;  // "extreme-vertices"
+  // The bead holds its patch rigid (the membrane is glued to the silica bead over the contact,
+  // Mills et al. 2004, Dao et al. 2003): the patch translates as one body under F plus the
+  // membrane's pull on it. false: every patch vertex moves freely under its share F/n (HemoCell,
+  // Fedosov et al. 2010, the default); the patch then narrows into a tether-like tip (1.6 to
+  // 1.1 um wide, 0.3 to 1.3 um long at 193 pN). Quasi-static mode only.
+  bool rigid = false;
 };
 
 struct ContactPatches {
@@ -37,6 +43,11 @@ std::vector<std::string> contact_rule_names();
 // vertex (a contact diameter or vertex count too large for the cell).
 ContactPatches select_contact_patches(std::span<const Vec3> positions_um,
                                       const ContactSettings& settings);
+
+// The patches as groups that move rigidly (membrane::RelaxationSettings::rigid_groups), or none
+// when settings.rigid is false.
+std::vector<std::vector<std::int32_t>> rigid_contact_groups(const ContactPatches& patches,
+                                                            const ContactSettings& settings);
 
 // Per-vertex external forces: +F/n x on each of the n vertices of the positive patch, -F/m x on
 // each of the m of the negative one (total +F and -F: no net force).

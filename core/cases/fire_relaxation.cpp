@@ -155,6 +155,7 @@ membrane::RelaxationResult relax_membrane_fire(const membrane::MembraneModel& mo
                   (external_forces_pN.empty() ? Vec3::Zero() : Vec3(external_forces_pN[i]));
     }
     kinks.smooth(positions_um, forces, net_pN);
+    membrane::share_force_within_rigid_groups(settings.rigid_groups, net_pN);
     result.max_force_pN = max_norm(net_pN);
     result.converged = result.max_force_pN < settings.force_tolerance_pN;
     if (result.converged || result.iterations >= settings.max_iterations) break;

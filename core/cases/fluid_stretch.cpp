@@ -168,6 +168,11 @@ StretchBox stretch_box(std::span<const Vec3> positions_um, double dx_um, double 
 
 StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const StretchCell& cell,
                              const StretchSettings& settings, const StretchObserver& observer) {
+  if (settings.contact.rigid) {
+    throw InputError("stretch.contact.rigid",
+                     "the fluid mode moves every vertex with the fluid and cannot hold a contact "
+                     "patch rigid; use the quasi-static mode or set it to false");
+  }
   const auto& fluid_settings = settings.fluid;
   // Constructed in one place and run() called in one place (checkpointing wires in here).
   const auto simulation = make_simulation(model, cell, fluid_settings);

@@ -33,6 +33,8 @@ StretchRun run_quasi_static_stretch(const membrane::MembraneModel& model, const 
                                     const StretchSettings& settings,
                                     const StretchObserver& observer) {
   const auto relax = find_relaxation_method(settings.relaxation);
+  auto relaxation_settings = settings.relaxation_settings;
+  relaxation_settings.rigid_groups = rigid_contact_groups(cell.patches, settings.contact);
   auto positions_um = cell.mesh.positions_um;
   auto workspace = model.make_workspace();
   auto forces = model.make_forces();
@@ -43,7 +45,7 @@ StretchRun run_quasi_static_stretch(const membrane::MembraneModel& model, const 
     const auto start = std::chrono::steady_clock::now();
     bool forces_known = false;
     try {
-      const auto result = relax(model, positions_um, external_pN, settings.relaxation_settings);
+      const auto result = relax(model, positions_um, external_pN, relaxation_settings);
       point.converged = result.converged;
       point.iterations = result.iterations;
       point.residual_force_pN = result.max_force_pN;

@@ -1,18 +1,19 @@
 // The frame and the observables of the stretch experiment (DESIGN.md §4 "stretch").
 //
-// Frame: the pull axis is x, through the solid centroid at the origin. A cell whose x axis is
-// already a longest principal axis (the built-in shapes: a discocyte's two in-plane axes tie, and
-// x is one of them) is only centred; any other mesh is rotated onto its principal axes first.
+// Frame: the pull axis is x, through the solid centroid at the origin, and z the cell's thinnest
+// axis (the microscope's line of sight: the disc lies in the focal plane). A cell whose x axis is
+// already a longest and z a shortest principal axis (the built-in shapes: a discocyte's two
+// in-plane axes tie, x is one of them, z its symmetry axis) is only centred; any other mesh is
+// rotated onto its principal axes first.
 //
 // Observables, as measured on the microscope images of Mills et al. (2004):
 //   axial diameter      = the extent along the pull axis, max x - min x;
-//   transverse diameter = the largest extent perpendicular to it: the largest distance between
-//                         two vertices projected onto the y-z plane. This equals the largest
-//                         width of the projection over all directions of that plane (the
-//                         diameter of a point set is its maximal width), so the two readings of
-//                         "largest extent" coincide. At rest it is the discocyte's diameter; the
-//                         thickness (~2.6 um) never wins against the shrinking in-plane width
-//                         while the cell stays wider than it is thick.
+//   transverse diameter = the width of the image perpendicular to the pull: the extent along y,
+//                         the in-plane perpendicular (the projection along the line of sight z),
+//                         as HemoCell's stretchCell reads it off the bounding box. Not the largest
+//                         extent in the y-z plane: a cell that thickens, folds or turns about the
+//                         pull axis would then report its thickness or a diagonal, which the
+//                         image does not show.
 #pragma once
 
 #include <span>

@@ -78,6 +78,16 @@ double estimate_stiffest_mode_pN_per_um(const MembraneModel& model,
   return stiffness_pN_per_um;
 }
 
+void share_force_within_rigid_groups(std::span<const std::vector<std::int32_t>> groups,
+                                     std::span<Vec3> net_forces_pN) {
+  for (const auto& group : groups) {
+    Vec3 sum_pN = Vec3::Zero();
+    for (const auto vertex : group) sum_pN += net_forces_pN[static_cast<std::size_t>(vertex)];
+    const Vec3 mean_pN = sum_pN / static_cast<double>(group.size());
+    for (const auto vertex : group) net_forces_pN[static_cast<std::size_t>(vertex)] = mean_pN;
+  }
+}
+
 RelaxationResult relax_membrane(const MembraneModel& model, std::span<Vec3> positions_um,
                                 std::span<const Vec3> external_forces_pN,
                                 const RelaxationSettings& settings) {
@@ -109,6 +119,7 @@ RelaxationResult relax_membrane(const MembraneModel& model, std::span<Vec3> posi
     if (!external_forces_pN.empty()) {
       for (std::size_t i = 0; i < count; ++i) forces.total_pN[i] += external_forces_pN[i];
     }
+    share_force_within_rigid_groups(settings.rigid_groups, forces.total_pN);
     result.max_force_pN = max_norm(forces.total_pN);
     result.converged = result.max_force_pN < settings.force_tolerance_pN;
     if (result.converged || result.iterations == settings.max_iterations) return result;

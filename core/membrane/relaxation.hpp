@@ -11,7 +11,9 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
+#include <vector>
 
 #include "common/vec3.hpp"
 #include "membrane/membrane_model.hpp"
@@ -28,6 +30,10 @@ struct RelaxationSettings {
   // step.
   double step_fraction = 1.0;
   std::size_t stiffness_update_interval = 1000;
+  // Groups of vertices held together as one rigid body that only translates (the membrane glued
+  // to a bead over its contact patch). Each member is driven by its group's mean net force (equal
+  // masses, resp. mobilities), so the group keeps its shape; its equilibrium is a vanishing sum.
+  std::vector<std::vector<std::int32_t>> rigid_groups{};
 };
 
 struct RelaxationResult {
@@ -46,6 +52,11 @@ struct RelaxationResult {
 RelaxationResult relax_membrane(const MembraneModel& model, std::span<Vec3> positions_um,
                                 std::span<const Vec3> external_forces_pN,
                                 const RelaxationSettings& settings);
+
+// Replaces the net force of every member of each group by the group's mean: the force that moves
+// a rigid, translating group of equal masses as a whole (RelaxationSettings::rigid_groups).
+void share_force_within_rigid_groups(std::span<const std::vector<std::int32_t>> groups,
+                                     std::span<Vec3> net_forces_pN);
 
 // lambda_max (pN/um): power iteration on the Jacobian of the total membrane force at positions_um.
 double estimate_stiffest_mode_pN_per_um(const MembraneModel& model,

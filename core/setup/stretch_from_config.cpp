@@ -69,6 +69,7 @@ cases::StretchSettings stretch_settings_from(const config::Config& config) {
   settings.contact.rule = config.string("stretch.contact.rule");
   settings.contact.diameter_um = config.number("stretch.contact.diameter_um");
   settings.contact.extreme_vertex_count = config.integer("stretch.contact.extreme_vertex_count");
+  settings.contact.rigid = config.boolean("stretch.contact.rigid");
   settings.relaxation = config.string("stretch.quasi_static.relaxation");
   settings.relaxation_settings.force_tolerance_pN =
       config.number("stretch.quasi_static.force_tolerance_pN");

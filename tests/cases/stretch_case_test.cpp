@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "common/errors.hpp"
@@ -124,6 +125,33 @@ TEST(StretchCase, LowResolutionCurve) {
   }
 }
 
+// A rigid contact (the membrane glued to a bead) moves each patch as one body: every patch vertex
+// has the same displacement, and the patch is in balance with the tweezers as before. The fluid
+// mode cannot hold a patch rigid and says so.
+TEST(StretchCase, RigidContactPatchTranslatesAsOneBody) {
+  const rbcsim::cases::ContactSettings contact{.rigid = true};
+  const auto cell = rbcsim::cases::prepare_stretch_cell(support::shipped_discocyte(3), contact);
+  const MembraneModel model(cell.mesh, MembraneParameters{});
+  StretchSettings settings;
+  settings.contact = contact;
+  settings.forces_pN = {0.0, 50.0};
+  const auto observed = support::run_and_observe(model, cell, settings);
+  ASSERT_TRUE(observed.run.ok()) << observed.run.failure;
+  const auto& rest_um = observed.states.front().positions_um;
+  const auto& pulled_um = observed.states.back().positions_um;
+  for (const auto* patch : {&cell.patches.positive_end, &cell.patches.negative_end}) {
+    const Vec3 shift_um = pulled_um[patch->front()] - rest_um[patch->front()];
+    EXPECT_GT(std::abs(shift_um.x()), 0.5);
+    for (const auto v : *patch) {
+      EXPECT_NEAR((pulled_um[v] - rest_um[v] - shift_um).norm(), 0.0, 1e-9) << v;
+    }
+  }
+  expect_patch_force_balance(observed.states, cell.patches);
+
+  settings.mode = "fluid";
+  EXPECT_THROW(rbcsim::cases::run_stretch(model, cell, settings, {}), rbcsim::InputError);
+}
+
 TEST(StretchCase, UnknownModeIsAnInputError) {
   const auto cell = rbcsim::cases::prepare_stretch_cell(support::shipped_discocyte(3), {});
   const MembraneModel model(cell.mesh, MembraneParameters{});
@@ -131,7 +159,8 @@ TEST(StretchCase, UnknownModeIsAnInputError) {
   settings.mode = "fluid-someday";
   settings.forces_pN = {0.0};
   EXPECT_THROW(rbcsim::cases::run_stretch(model, cell, settings, {}), rbcsim::InputError);
-  EXPECT_EQ(rbcsim::cases::stretch_mode_names(), (std::vector<std::string>{"quasi-static", "fluid"}));
+  EXPECT_EQ(rbcsim::cases::stretch_mode_names(),
+            (std::vector<std::string>{"quasi-static", "fluid"}));
 }
 
 // A force the relaxation cannot reach within its iteration budget stops the run with a message,

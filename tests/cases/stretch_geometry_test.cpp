@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <cmath>
 
 #include "mesh/icosphere.hpp"
 #include "stretch_test_support.hpp"
@@ -25,18 +24,27 @@ TEST(StretchGeometry, DiametersOfAnEllipsoid) {
   const auto mesh = ellipsoid(Vec3(4.0, 3.0, 1.5));
   EXPECT_NEAR(cases::axial_diameter_um(mesh.positions_um), 8.0, 1e-12);
   EXPECT_NEAR(cases::transverse_diameter_um(mesh.positions_um), 6.0, 1e-12);
-  // Taller than wide: the largest perpendicular extent is then the thickness.
+  // Thicker than wide (a cell that rounded up): the image still shows the width along y.
   const auto tall = ellipsoid(Vec3(4.0, 1.5, 3.0));
-  EXPECT_NEAR(cases::transverse_diameter_um(tall.positions_um), 6.0, 1e-12);
+  EXPECT_NEAR(cases::transverse_diameter_um(tall.positions_um), 3.0, 1e-12);
 }
 
-// The transverse diameter is the largest distance in the y-z projection, whatever its direction:
-// for a square of side 2 it is the diagonal.
-TEST(StretchGeometry, TransverseDiameterIsTheLargestProjectedDistance) {
+// The transverse diameter is the width of the image (the projection along z) across the pull:
+// for a square cross-section of side 2 it is the side, not the diagonal of the y-z projection.
+TEST(StretchGeometry, TransverseDiameterIsTheImageWidth) {
   const std::vector<Vec3> corners{Vec3(0, 1, 1),   Vec3(5, -1, 1), Vec3(-3, 1, -1),
                                   Vec3(1, -1, -1), Vec3(0, 0, 0),  Vec3(2, 0.5, -0.2)};
-  EXPECT_NEAR(cases::transverse_diameter_um(corners), 2.0 * std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(cases::transverse_diameter_um(corners), 2.0, 1e-12);
   EXPECT_NEAR(cases::axial_diameter_um(corners), 8.0, 1e-12);
+}
+
+// A disc lying with its thin axis on y is turned so that it lies in the image plane x-y (z, the
+// line of sight, its thinnest axis): the transverse diameter is then its width, not its thickness.
+TEST(StretchGeometry, FrameTurnsTheThinAxisOntoTheLineOfSight) {
+  const auto disc = ellipsoid(Vec3(4.0, 1.5, 3.9));
+  const auto framed = cases::in_stretch_frame(disc);
+  EXPECT_NEAR(cases::axial_diameter_um(framed.positions_um), 8.0, 1e-9);
+  EXPECT_NEAR(cases::transverse_diameter_um(framed.positions_um), 7.8, 1e-9);
 }
 
 // A cell with a long axis elsewhere is turned onto x and centred; a cell whose x is already a

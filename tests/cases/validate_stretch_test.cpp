@@ -1,9 +1,10 @@
 // Long physics check (label `validate`: every test name starts with Validate, see
 // tests/CMakeLists.txt; not in the default suite): the paper's resolution, the
 // 13 forces of Mills et al. (2004), with all six terms and without area_difference and
-// total_curvature (the paper's Fig. 8 comparison). Asserts what must hold whatever the
-// parameters; prints the curve and its distance from the measurements, which is a finding, not a
-// pass/fail bound (the parameters are Table 2's, not fitted here).
+// total_curvature (the paper's Fig. 8 comparison), with free contact patches (the default) and
+// with patches held rigid as by a glued bead (README "rbcsim stretch", issue #4). Asserts what must
+// hold whatever the parameters; prints the curve and its distance from the measurements, which is a
+// finding, not a pass/fail bound (the parameters are Table 2's, not fitted here).
 #include <gtest/gtest.h>
 
 #include <omp.h>
@@ -19,16 +20,23 @@ namespace {
 using rbcsim::membrane::MembraneParameters;
 namespace cases = rbcsim::cases;
 
-class ValidateStretch : public ::testing::TestWithParam<std::vector<std::string>> {};
+struct StretchVariant {
+  std::vector<std::string> terms;
+  bool rigid_contact = false;
+};
+
+class ValidateStretch : public ::testing::TestWithParam<StretchVariant> {};
 
 TEST_P(ValidateStretch, MillsCurveAtThePapersResolution) {
   const auto reference = cases::stretch_reference_from(rbcsim::io::read_csv_file(
       std::string(RBCSIM_SOURCE_DIR) + "/share/reference/mills2004_stretch.csv"));
-  const auto cell = cases::prepare_stretch_cell(cases::testing::shipped_discocyte(4), {});
+  const cases::ContactSettings contact{.rigid = GetParam().rigid_contact};
+  const auto cell = cases::prepare_stretch_cell(cases::testing::shipped_discocyte(4), contact);
   MembraneParameters parameters;
-  parameters.forces = GetParam();
+  parameters.forces = GetParam().terms;
   const rbcsim::membrane::MembraneModel model(cell.mesh, parameters);
   cases::StretchSettings settings;
+  settings.contact = contact;
   for (const auto& measured : reference) settings.forces_pN.push_back(measured.force_pN);
 
   const auto start = std::chrono::steady_clock::now();
@@ -38,6 +46,7 @@ TEST_P(ValidateStretch, MillsCurveAtThePapersResolution) {
   ASSERT_TRUE(run.ok()) << run.failure;
   std::printf("terms:");
   for (const auto& term : parameters.forces) std::printf(" %s", term.c_str());
+  std::printf(", %s contact patches", contact.rigid ? "rigid" : "free");
   std::printf("\n force_pN  axial_um (Mills)   transverse_um (Mills)  iterations\n");
   for (std::size_t i = 0; i < run.points.size(); ++i) {
     const auto& p = run.points[i];
@@ -59,10 +68,12 @@ TEST_P(ValidateStretch, MillsCurveAtThePapersResolution) {
       omp_get_max_threads());
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    ValidateTerms, ValidateStretch,
-    ::testing::Values(std::vector<std::string>{"link", "bend", "area", "volume", "area_difference",
-                                               "total_curvature"},
-                      std::vector<std::string>{"link", "bend", "area", "volume"}));
+const std::vector<std::string> kSixTerms{
+    "link", "bend", "area", "volume", "area_difference", "total_curvature"};
+const std::vector<std::string> kFourTerms{"link", "bend", "area", "volume"};
+
+INSTANTIATE_TEST_SUITE_P(ValidateTerms, ValidateStretch,
+                         ::testing::Values(StretchVariant{kSixTerms}, StretchVariant{kFourTerms},
+                                           StretchVariant{kSixTerms, true}));
 
 }  // namespace

@@ -33,13 +33,14 @@ TEST(StretchFromConfig, DefaultsAreTheMillsForcesAndTheTwoMicrometreContact) {
 TEST(StretchFromConfig, OverridesReachTheSettings) {
   const auto config = rbcsim::config::resolve_config(
       {.assignments = {"stretch.forces_pN=0:200:50", "stretch.contact.rule=extreme-vertices",
-                       "stretch.contact.extreme_vertex_count=12",
+                       "stretch.contact.extreme_vertex_count=12", "stretch.contact.rigid=true",
                        "stretch.quasi_static.relaxation=euler",
                        "stretch.quasi_static.max_iterations=77"}});
   const auto settings = rbcsim::setup::stretch_settings_from(config);
   EXPECT_EQ(settings.forces_pN, (std::vector<double>{0, 50, 100, 150, 200}));
   EXPECT_EQ(settings.contact.rule, "extreme-vertices");
   EXPECT_EQ(settings.contact.extreme_vertex_count, 12);
+  EXPECT_TRUE(settings.contact.rigid);
   EXPECT_EQ(settings.relaxation, "euler");
   EXPECT_EQ(settings.relaxation_settings.max_iterations, 77u);
 }

@@ -23,6 +23,10 @@ void add_contact_options(OptionTable& table) {
                    kDefaults.contact.extreme_vertex_count,
                    "Vertices per patch of the extreme-vertices rule (HemoCell: 7).")
       .at_least(1);
+  table.add_boolean("stretch.contact.rigid", kDefaults.contact.rigid,
+                    "The bead holds its contact patch rigid: the patch translates as one body "
+                    "(Mills et al. 2004). false: each patch vertex moves under its share of the "
+                    "force alone (HemoCell).");
 }
 
 void add_quasi_static_options(OptionTable& table) {
