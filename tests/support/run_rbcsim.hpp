@@ -30,4 +30,15 @@ inline RunResult run_rbcsim(const std::string& arguments, const std::filesystem:
   return {exit_code, read_text(out), read_text(err)};
 }
 
+// Runs the binary as run_rbcsim does, its output discarded, and sends it SIGINT after `seconds`,
+// to the command only as Ctrl-C would (timeout --foreground): its exit code, -1 if it did not
+// exit by itself.
+inline int run_rbcsim_interrupted_after(int seconds, const std::string& arguments) {
+  const std::string command = "timeout --foreground --preserve-status -s INT " +
+                              std::to_string(seconds) + " '" + RBCSIM_BINARY + "' " + arguments +
+                              " >/dev/null 2>&1 </dev/null";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 }  // namespace rbcsim::testing
