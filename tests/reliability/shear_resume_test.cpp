@@ -168,14 +168,14 @@ TEST(ShearResume, ResumeThroughTheBinaryKeepsFinishedRatesAndRewritesTheSameResu
   EXPECT_TRUE(std::filesystem::exists(run_dir / "shear.csv"));
 }
 
-// Ctrl-C (here SIGINT after a second, to the command only: --foreground; the cell at 100 1/s,
+// Ctrl-C (here SIGINT once the rate has started, its rate_000/ created; the cell at 100 1/s,
 // never steady with a tolerance of 1e-12, would run 1000 strains): the rates done so far (none) in
 // result.json with status "interrupted", the interrupted rate's checkpoint, exit code 130.
 TEST(ShearResume, SigintWritesTheRatesDoneSoFarAndACheckpoint) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
-  EXPECT_EQ(rbcsim::testing::run_rbcsim_interrupted_after(
-                1,
+  EXPECT_EQ(rbcsim::testing::run_rbcsim_interrupted_once(
+                run_dir / shear_rate_directory(0),
                 "shear --quiet --threads 1 --rates 100 --max-strain 1000 --set mesh.subdivisions=3"
                 " --set shear.steady_tolerance_per_strain=1e-12"
                 " --set lattice.spacing_um=1 --set shear.max_reynolds_number=0.4"

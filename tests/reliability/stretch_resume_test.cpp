@@ -177,14 +177,14 @@ TEST(StretchResume, ResumeThroughTheBinaryRewritesTheSameResults) {
   EXPECT_TRUE(std::filesystem::exists(run_dir / "shapes" / "stretch_001.vtp"));
 }
 
-// Ctrl-C (SIGINT after a second, to the command only: --foreground) on a curve of 41 forces of
-// at most 1e-3 s each: the forces done so far in result.json (status "interrupted") and
-// stretch.csv, a checkpoint, exit code 130.
+// Ctrl-C (SIGINT once the first force's shape is written) on a curve of 41 forces of at most
+// 1e-3 s each: the forces done so far in result.json (status "interrupted") and stretch.csv, a
+// checkpoint, exit code 130.
 TEST(StretchResume, SigintWritesTheForcesDoneSoFarAndACheckpoint) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
-  EXPECT_EQ(rbcsim::testing::run_rbcsim_interrupted_after(
-                1,
+  EXPECT_EQ(rbcsim::testing::run_rbcsim_interrupted_once(
+                run_dir / "shapes" / "stretch_000.vtp",
                 "stretch --quiet --threads 1 --mode fluid --forces 0:40/41"
                 " --set mesh.subdivisions=2 --set lattice.spacing_um=2"
                 " --set stretch.fluid.kinematic_viscosity_m2_per_s=3.6667e-7"
