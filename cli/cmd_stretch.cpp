@@ -28,6 +28,7 @@ namespace {
 
 struct StretchOptions {
   CommonOptions common;
+  CheckpointOptions checkpoint;  // fluid mode only
   std::optional<std::string> mode;
   std::optional<std::string> forces;
   std::optional<double> contact_diameter_um;
@@ -51,7 +52,7 @@ config::Config resolve_stretch_config(const StretchOptions& options) {
 }
 
 std::string shape_file_name(std::size_t index) {
-  std::array<char, 32> name{};
+  std::array<char, 48> name{};  // room for any index
   std::snprintf(name.data(), name.size(), "shapes/stretch_%03zu.vtp", index);
   return name.data();
 }
@@ -65,34 +66,51 @@ std::string effort(const cases::StretchPoint& point) {
   return std::to_string(effort_count(point)) + (point.steps > 0 ? " steps" : " iterations");
 }
 
-// Writes each force's shape as it is reached, and reports progress.
+// Writes each force's shape as it is reached (shapes/stretch_<point index>.vtp: a resumed run
+// adds to the shapes of the points it keeps), and reports progress.
 class ShapeRecorder {
  public:
   ShapeRecorder(const RunDirectory& run, const membrane::MembraneModel& model,
                 std::size_t force_count, const Progress& progress)
-      : run_(run), model_(model), force_count_(force_count), progress_(progress) {
-    std::filesystem::create_directories(run_.path() / "shapes");
-  }
+      : run_(run), model_(model), force_count_(force_count), progress_(progress) {}
 
   void operator()(const cases::StretchState& state) {
-    const auto file = shape_file_name(entries_.size());
-    cases::write_stretch_shape(run_.path() / file, model_.triangles(), state);
-    entries_.push_back({state.point.force_pN, file});
+    std::filesystem::create_directories(run_.path() / "shapes");
+    cases::write_stretch_shape(run_.path() / shape_file_name(state.point_index), model_.triangles(),
+                               state);
     progress_.update(
-        "stretch: " + std::to_string(entries_.size()) + "/" + std::to_string(force_count_) +
+        "stretch: " + std::to_string(state.point_index + 1) + "/" + std::to_string(force_count_) +
         " forces, F = " + format_number(state.point.force_pN) + " pN, " + effort(state.point) +
         ", " + format_number(std::round(run_.elapsed_s())) + " s");
   }
-
-  const std::vector<io::PvdEntry>& entries() const { return entries_; }
 
  private:
   const RunDirectory& run_;
   const membrane::MembraneModel& model_;
   std::size_t force_count_;
   const Progress& progress_;
-  std::vector<io::PvdEntry> entries_;
 };
+
+// Every point's shape is written (ShapeRecorder), the failed one's too.
+std::vector<io::PvdEntry> shape_entries(const cases::StretchRun& run) {
+  std::vector<io::PvdEntry> entries;
+  for (std::size_t i = 0; i < run.points.size(); ++i) {
+    entries.push_back({run.points[i].force_pN, shape_file_name(i)});
+  }
+  return entries;
+}
+
+// The quasi-static mode takes seconds and has no coupled simulation to checkpoint: it refuses
+// the options rather than ignore them.
+void require_fluid_mode_for_checkpoints(const StretchOptions& options,
+                                        const cases::StretchSettings& settings) {
+  if (settings.mode == "fluid") return;
+  const auto& checkpoint = options.checkpoint;
+  if (checkpoint.every.empty() && checkpoint.resume_directory.empty()) return;
+  throw InputError(checkpoint.every.empty() ? "--resume" : "--checkpoint-every",
+                   "only the fluid mode (--mode fluid) checkpoints; the " + settings.mode +
+                       " mode takes seconds, run it again");
+}
 
 nlohmann::ordered_json headline(const cases::StretchRun& run,
                                 const cases::StretchComparison& comparison) {
@@ -158,6 +176,7 @@ void write_table(const RunDirectory& directory, const cases::StretchRun& run) {
 void run_stretch_command(const StretchOptions& options) {
   const auto config = resolve_stretch_config(options);
   auto settings = setup::stretch_settings_from(config);
+  require_fluid_mode_for_checkpoints(options, settings);
   const auto parameters = setup::membrane_parameters_from(config);
   const auto cell_mesh = setup::cell_mesh_from(config);
   for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
@@ -166,8 +185,19 @@ void run_stretch_command(const StretchOptions& options) {
   setup::require_cell_fits_stretch_box(cell.mesh, settings);
 
   const RunDirectory directory("stretch", options.common, config);
-  directory.start(config, cell_mesh);
   settings.fluid.output_directory = directory.path();
+  // With --resume (fluid mode only) the directory is started once the checkpoint is accepted, so
+  // a refused one leaves the run directory as it was.
+  bool started = false;
+  const auto start = [&] {
+    if (!started) directory.start(config, cell_mesh);
+    started = true;
+  };
+  if (options.checkpoint.resume_directory.empty()) start();
+  settings.fluid.configure = [&](coupling::CoupledSimulation& simulation) {
+    wire_checkpoints(simulation, options.checkpoint, directory, config);
+    start();
+  };
   const Progress progress(options.common);
   ShapeRecorder recorder(directory, model, settings.forces_pN.size(), progress);
   const auto run = cases::run_stretch(model, cell, settings, std::ref(recorder));
@@ -176,7 +206,7 @@ void run_stretch_command(const StretchOptions& options) {
   const auto comparison =
       cases::compare_with_reference(run.points, setup::mills2004_stretch_reference());
   write_table(directory, run);
-  io::write_pvd_collection(directory.path() / "stretch.pvd", recorder.entries());
+  io::write_pvd_collection(directory.path() / "stretch.pvd", shape_entries(run));
   auto result = directory.result_head_with_status(run.interrupted ? "interrupted"
                                                   : run.ok()      ? "ok"
                                                                   : "failed");
@@ -222,6 +252,7 @@ void attach_stretch(CLI::App& application) {
                    "half of it from each end vertex")
       ->type_name("D");
   add_common_options(command, options->common);
+  add_checkpoint_options(command, options->checkpoint, options->common);
   command->callback([options] { run_stretch_command(*options); });
 }
 

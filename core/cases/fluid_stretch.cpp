@@ -6,11 +6,13 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "cases/curvature_kinks.hpp"
 #include "cases/stretch_geometry.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/state_archive.hpp"
 #include "coupling/snapshot.hpp"
 
 namespace rbcsim::cases {
@@ -31,10 +33,11 @@ std::vector<Vec3> current_positions_um(const CoupledSimulation& simulation) {
 }
 
 // One force's stop: both diameters steady, or the force's time is up. Restarted at every force,
-// so that one criterion serves the whole curve of one simulation.
+// so that one criterion serves the whole curve of one simulation; its deadline and the
+// steady-state checks ride in the checkpoint.
 class ForceStop final : public coupling::StopCriterion {
  public:
-  explicit ForceStop(const FluidStretchSettings& settings) : settings_(settings) {}
+  explicit ForceStop(const FluidStretchSettings& settings) : settings_(settings) { start(0.0); }
 
   void start(double now_s) {
     deadline_s_ = now_s + settings_.max_time_per_force_s;
@@ -60,6 +63,18 @@ class ForceStop final : public coupling::StopCriterion {
     // The relative slack absorbs the round-off of steps * dt against a time in seconds.
     if (simulation.time_s() < deadline_s_ * (1.0 - 1e-12)) return std::nullopt;
     return "not steady after " + format_number(settings_.max_time_per_force_s) + " s";
+  }
+
+  // A checkpoint is taken while a force runs (never once it has stopped): steady_ is false.
+  void save_state(StateArchive& archive, const std::string& prefix) const override {
+    archive.put(prefix + "deadline_s", {deadline_s_});
+    axial_->save_state(archive, prefix + "axial.");
+    transverse_->save_state(archive, prefix + "transverse.");
+  }
+  void restore_state(StateArchive& archive, const std::string& prefix) override {
+    deadline_s_ = archive.take_number(prefix + "deadline_s");
+    axial_->restore_state(archive, prefix + "axial.");
+    transverse_->restore_state(archive, prefix + "transverse.");
   }
 
   bool steady() const { return steady_; }
@@ -112,6 +127,95 @@ struct ForceRunStart {
   std::size_t step = 0;
   std::size_t capped_steps = 0;
   double max_speed_lu = 0.0;
+  std::chrono::steady_clock::time_point wall_clock = std::chrono::steady_clock::now();
+};
+
+// Where the curve is: with the simulation's own state, what a resumed run continues from.
+struct CurveProgress {
+  std::size_t force_index = 0;  // the force being applied
+  bool force_started = false;   // its ramp, stop criterion and start record are set
+  ForceRamp ramp;
+  ForceRunStart start;
+  std::vector<StretchPoint> points;  // of the forces before force_index
+};
+
+// A point as numbers, in this order, for the checkpoint; the force record likewise.
+constexpr std::size_t kPointValues = 12;
+constexpr std::size_t kForceValues = 9;
+
+std::vector<double> point_values(std::span<const StretchPoint> points) {
+  std::vector<double> values;
+  values.reserve(points.size() * kPointValues);
+  for (const auto& p : points) {
+    values.insert(values.end(),
+                  {p.force_pN, p.axial_um, p.transverse_um, p.converged ? 1.0 : 0.0,
+                   static_cast<double>(p.iterations), static_cast<double>(p.steps), p.time_s,
+                   p.max_mach_number, p.max_reynolds_number, p.residual_force_pN,
+                   static_cast<double>(p.force_cap_hits), p.wall_time_s});
+  }
+  return values;
+}
+
+std::vector<StretchPoint> points_from(std::span<const double> values) {
+  std::vector<StretchPoint> points;
+  for (std::size_t i = 0; i + kPointValues <= values.size(); i += kPointValues) {
+    const auto v = values.subspan(i, kPointValues);
+    points.push_back({.force_pN = v[0],
+                      .axial_um = v[1],
+                      .transverse_um = v[2],
+                      .converged = v[3] != 0.0,
+                      .iterations = static_cast<std::size_t>(v[4]),
+                      .steps = static_cast<std::size_t>(v[5]),
+                      .time_s = v[6],
+                      .max_mach_number = v[7],
+                      .max_reynolds_number = v[8],
+                      .residual_force_pN = v[9],
+                      .force_cap_hits = static_cast<std::size_t>(v[10]),
+                      .wall_time_s = v[11]});
+  }
+  return points;
+}
+
+// Never stops the run: carries the curve's progress in the checkpoint (as shear's tank-treading
+// record rides in its). A force's wall time goes on from where the checkpoint left it.
+class ProgressInCheckpoint final : public coupling::StopCriterion {
+ public:
+  explicit ProgressInCheckpoint(CurveProgress& progress) : progress_(progress) {}
+  std::optional<std::string> check(const CoupledSimulation& /*simulation*/) override {
+    return std::nullopt;
+  }
+  void save_state(StateArchive& archive, const std::string& prefix) const override {
+    const auto& p = progress_;
+    const double wall_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - p.start.wall_clock)
+            .count();
+    archive.put(prefix + "force",
+                {static_cast<double>(p.force_index), p.force_started ? 1.0 : 0.0, p.ramp.from_pN,
+                 p.ramp.to_pN, p.ramp.start_s, static_cast<double>(p.start.step),
+                 static_cast<double>(p.start.capped_steps), p.start.max_speed_lu, wall_s});
+    archive.put(prefix + "points", point_values(p.points));
+  }
+  void restore_state(StateArchive& archive, const std::string& prefix) override {
+    const auto force = archive.take(prefix + "force", kForceValues);
+    auto& p = progress_;
+    p.force_index = static_cast<std::size_t>(force[0]);
+    p.force_started = force[1] != 0.0;
+    p.ramp = {force[2], force[3], force[4]};
+    p.start.step = static_cast<std::size_t>(force[5]);
+    p.start.capped_steps = static_cast<std::size_t>(force[6]);
+    p.start.max_speed_lu = force[7];
+    p.start.wall_clock = std::chrono::steady_clock::now() -
+                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                             std::chrono::duration<double>(force[8]));
+    const auto values = archive.take(prefix + "points", std::nullopt);
+    if (values.size() % kPointValues != 0) {
+      throw InputError(archive.source(), prefix + "points: not whole points");
+    }
+    p.points = points_from(values);
+  }
+
+ private:
+  CurveProgress& progress_;
 };
 
 // The observables of the state reached and what it took to reach it.
@@ -141,6 +245,18 @@ std::string not_steady(std::span<const StretchPoint> points, double max_time_s) 
   if (forces.empty()) return {};
   return "F = " + forces + " pN: the diameters were not steady after " + format_number(max_time_s) +
          " s; raise stretch.fluid.max_time_per_force_s or loosen stretch.fluid.steady_*";
+}
+
+// The next force: the tweezers ramp to it from the force they reached, its stop criterion and
+// start record begin now.
+void start_force(const CoupledSimulation& simulation, double force_pN, double ramp_time_s,
+                 ForceStop& force_stop, CurveProgress& progress) {
+  const double now_s = simulation.time_s();
+  progress.ramp = {progress.ramp.force_pN(now_s, ramp_time_s), force_pN, now_s};
+  progress.start = {.step = simulation.time_step(),
+                    .capped_steps = simulation.capped_steps_per_cell().front()};
+  force_stop.start(now_s);
+  progress.force_started = true;
 }
 
 }  // namespace
@@ -178,26 +294,28 @@ StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const Stretch
   const auto simulation = make_simulation(model, cell, fluid_settings);
   // The tweezer forces are linear in F: those of 1 pN, scaled by the ramped force.
   const auto unit_tweezers_pN = tweezer_forces_pN(model.vertex_count(), cell.patches, 1.0);
-  ForceRamp ramp;
+  CurveProgress progress;
   // The total-curvature kinks smoothed as in the quasi-static mode (curvature_kinks.hpp): the
   // same model, and no force that flips sign with a flat edge's angle from one step to the next.
   const CurvatureKinks kinks(simulation->cell(0).model());
-  simulation->add_external_force([&](std::size_t, const coupling::Cell& state,
-                                     std::span<Vec3> forces_pN) {
-    const double force_pN = ramp.force_pN(simulation->time_s(), fluid_settings.force_ramp_time_s);
-    for (std::size_t v = 0; v < forces_pN.size(); ++v) {
-      forces_pN[v] += force_pN * unit_tweezers_pN[v];
-    }
-    kinks.smooth(state.positions_um(), state.membrane_forces(), forces_pN);
-  });
-  double max_speed_lu = 0.0;
-  simulation->add_observer({"stretch_speed", 1, [&max_speed_lu](const CoupledSimulation& s) {
+  simulation->add_external_force(
+      [&](std::size_t, const coupling::Cell& state, std::span<Vec3> forces_pN) {
+        const double force_pN =
+            progress.ramp.force_pN(simulation->time_s(), fluid_settings.force_ramp_time_s);
+        for (std::size_t v = 0; v < forces_pN.size(); ++v) {
+          forces_pN[v] += force_pN * unit_tweezers_pN[v];
+        }
+        kinks.smooth(state.positions_um(), state.membrane_forces(), forces_pN);
+      });
+  simulation->add_observer({"stretch_speed", 1, [&progress](const CoupledSimulation& s) {
+                              auto& max_speed_lu = progress.start.max_speed_lu;
                               max_speed_lu =
                                   std::max(max_speed_lu, largest_norm(s.cell(0).velocities_lu()));
                             }});
   auto stop = std::make_unique<ForceStop>(fluid_settings);
   ForceStop& force_stop = *stop;
   simulation->add_stop_criterion(std::move(stop));
+  simulation->add_stop_criterion(std::make_unique<ProgressInCheckpoint>(progress));
   const auto& units = simulation->units();
   if (fluid_settings.snapshot_interval_s > 0.0 && !fluid_settings.output_directory.empty()) {
     const double steps =
@@ -205,37 +323,43 @@ StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const Stretch
     coupling::add_vtk_output(*simulation, fluid_settings.output_directory,
                              {static_cast<std::size_t>(std::max(1.0, std::round(steps))), 0});
   }
+  if (fluid_settings.configure) fluid_settings.configure(*simulation);
 
   StretchRun run;
-  for (const double force_pN : settings.forces_pN) {
-    ramp = {ramp.force_pN(simulation->time_s(), fluid_settings.force_ramp_time_s), force_pN,
-            simulation->time_s()};
-    max_speed_lu = 0.0;
-    force_stop.start(simulation->time_s());
-    const std::size_t start_step = simulation->time_step();
-    const std::size_t start_capped = simulation->capped_steps_per_cell().front();
-    const auto start = std::chrono::steady_clock::now();
+  for (; progress.force_index < settings.forces_pN.size(); ++progress.force_index) {
+    const double force_pN = settings.forces_pN[progress.force_index];
+    if (!progress.force_started) {
+      start_force(*simulation, force_pN, fluid_settings.force_ramp_time_s, force_stop, progress);
+    }
     StretchPoint point{.force_pN = force_pN};
     try {
       simulation->run();
       point.converged = force_stop.steady();
     } catch (const RuntimeFailure& failure) {
       run.failure = "F = " + format_number(force_pN) + " pN: " + failure.what();
+    } catch (const Interrupted& interrupted) {  // the unfinished force is not a point
+      run.failure = "F = " + format_number(force_pN) + " pN: " + interrupted.what();
+      run.interrupted = true;
+      break;
     }
+    progress.force_started = false;
     point.wall_time_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - progress.start.wall_clock)
+            .count();
     const auto positions_um = current_positions_um(*simulation);
-    measure_point(*simulation, positions_um, {start_step, start_capped, max_speed_lu}, point);
-    run.points.push_back(point);
+    measure_point(*simulation, positions_um, progress.start, point);
+    progress.points.push_back(point);
     if (observer) {
       // After a membrane failure its forces are those of a shape at a force law's limit: none.
       const auto& state = simulation->cell(0);
       const auto tweezers_pN = tweezer_forces_pN(model.vertex_count(), cell.patches, force_pN);
-      observer({run.points.back(), positions_um, run.ok() ? &state.membrane_forces() : nullptr,
-                tweezers_pN});
+      observer({progress.points.size() - 1, progress.points.back(), positions_um,
+                run.ok() ? &state.membrane_forces() : nullptr, tweezers_pN});
     }
-    if (!run.ok()) return run;
+    if (!run.ok()) break;
   }
+  run.points = std::move(progress.points);
+  if (!run.ok()) return run;
   if (!fluid_settings.output_directory.empty()) {
     coupling::write_fluid_snapshot(fluid_settings.output_directory / "fluid.vti", *simulation);
   }

@@ -71,7 +71,8 @@ StretchRun run_quasi_static_stretch(const membrane::MembraneModel& model, const 
     point.transverse_um = transverse_diameter_um(positions_um);
     run.points.push_back(point);
     if (observer) {
-      observer({run.points.back(), positions_um, forces_known ? &forces : nullptr, external_pN});
+      observer({run.points.size() - 1, run.points.back(), positions_um,
+                forces_known ? &forces : nullptr, external_pN});
     }
     if (!run.ok()) break;
   }

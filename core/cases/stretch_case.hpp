@@ -56,6 +56,10 @@ struct FluidStretchSettings {
   double snapshot_interval_s = 0.0;
   // Where failure dumps, the time series and the final fluid.vti go; empty: nowhere.
   std::filesystem::path output_directory;
+  // Called once with the simulation built (cell, tweezers, observers, stop criteria), before the
+  // first force: a checkpoint policy, a resume (the run then continues at the checkpoint's force
+  // and step, with the points measured before it; fluid_stretch.hpp). Empty: nothing.
+  std::function<void(coupling::CoupledSimulation&)> configure;
 };
 
 struct StretchSettings {
@@ -99,6 +103,7 @@ struct StretchPoint {
 // there (per term, for output; null when a force law reached its limit at this shape, so there
 // are none) and the tweezer forces.
 struct StretchState {
+  std::size_t point_index;  // in StretchRun::points (a resumed fluid run starts past 0)
   const StretchPoint& point;
   std::span<const Vec3> positions_um;
   const membrane::MembraneForces* membrane_forces;

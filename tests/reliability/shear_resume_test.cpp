@@ -6,10 +6,7 @@
 // --checkpoint-every and --resume. The coarse sweep of shear_case_test.cpp, one unit of strain.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-
 #include <csignal>
-#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -167,22 +164,20 @@ TEST(ShearResume, ResumeThroughTheBinaryKeepsFinishedRatesAndRewritesTheSameResu
   EXPECT_TRUE(std::filesystem::exists(run_dir / "shear.csv"));
 }
 
-// Ctrl-C (here SIGINT after a second, to the command only: --foreground; the cell at 100 1/s,
+// Ctrl-C (here SIGINT once the rate has started, its rate_000/ created; the cell at 100 1/s,
 // never steady with a tolerance of 1e-12, would run 1000 strains): the rates done so far (none) in
 // result.json with status "interrupted", the interrupted rate's checkpoint, exit code 130.
 TEST(ShearResume, SigintWritesTheRatesDoneSoFarAndACheckpoint) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
-  const std::string command =
-      "timeout --foreground --preserve-status -s INT 1 '" + std::string(RBCSIM_BINARY) +
-      "' shear --quiet --threads 1 --rates 100 --max-strain 1000 --set mesh.subdivisions=3"
-      " --set shear.steady_tolerance_per_strain=1e-12"
-      " --set lattice.spacing_um=1 --set shear.max_reynolds_number=0.4"
-      " --set shear.width_diameters=1.6 --set shear.gap_diameters=2 --output '" +
-      run_dir.string() + "' >/dev/null 2>&1";
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 130);
+  EXPECT_EQ(rbcsim::testing::run_rbcsim_interrupted_once(
+                run_dir / shear_rate_directory(0),
+                "shear --quiet --threads 1 --rates 100 --max-strain 1000 --set mesh.subdivisions=3"
+                " --set shear.steady_tolerance_per_strain=1e-12"
+                " --set lattice.spacing_um=1 --set shear.max_reynolds_number=0.4"
+                " --set shear.width_diameters=1.6 --set shear.gap_diameters=2 --output '" +
+                    run_dir.string() + "'"),
+            130);
   const auto result = rbcsim::testing::read_json(run_dir / "result.json");
   EXPECT_EQ(result["status"], "interrupted");
   const auto& rates = result["shear"]["rates"];
