@@ -1,6 +1,6 @@
 // rbcsim shear: one cell in simple shear flow, swept over shear rates (DESIGN.md §4): length,
-// breadth, deformation index, inclination, tank-treading frequency and surface smoothness of the
-// steady shape at each rate (paper Figs. 9-11).
+// breadth, deformation index, inclination, tank-treading frequency, surface smoothness and
+// mesh-scale roughness of the steady shape at each rate (paper Figs. 9-11).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
@@ -138,18 +138,18 @@ void print_table(const nlohmann::ordered_json& result, const std::vector<cases::
   for (const auto& term : section["forces_terms"]) {
     std::printf(" %s", term.get<std::string>().c_str());
   }
-  std::printf("\n%8s %10s %8s %8s %9s %10s %6s %8s %8s %10s %7s %7s", "rate_1/s", "sim_rate", "Re",
-              "Ca", "length_um", "breadth_um", "DI", "incl_deg", "tt_hz", "smooth_rad", "strain",
-              "steady");
+  std::printf("\n%8s %10s %8s %8s %9s %10s %6s %8s %8s %10s %9s %7s %7s", "rate_1/s", "sim_rate",
+              "Re", "Ca", "length_um", "breadth_um", "DI", "incl_deg", "tt_hz", "smooth_rad",
+              "rough_rad", "strain", "steady");
   if (verbose) std::printf(" %8s %10s %s", "steps", "wall_s", "stop");
   std::printf("\n");
   for (const auto& point : points) {
     const auto& plan = point.plan;
-    std::printf("%8.0f %10.4g %8.3g %8.3g %9.4f %10.4f %6.3f %8.2f %8.3g %10.4f %7.1f %7s",
+    std::printf("%8.0f %10.4g %8.3g %8.3g %9.4f %10.4f %6.3f %8.2f %8.3g %10.4f %9.4f %7.1f %7s",
                 plan.shear_rate_per_s, plan.simulated_shear_rate_per_s, plan.reynolds_number,
                 plan.capillary_number, point.shape.length_um, point.shape.breadth_um,
                 point.shape.deformation_index, point.shape.inclination_deg, point.tank_treading_hz,
-                point.smoothness_rad, point.strain,
+                point.smoothness_rad, point.roughness_rad, point.strain,
                 !point.failure.empty() ? "FAILED" : (point.steady ? "yes" : "NO"));
     if (verbose) {
       std::printf(" %8zu %10.2f %s", point.steps, point.wall_time_s,

@@ -224,11 +224,15 @@ std::size_t tracked_vertex(const mesh::TriangleMesh& cell) {
       p.begin());
 }
 
-double smoothness_rad(const membrane::MembraneModel& model, std::span<const Vec3> positions_um) {
+// The smoothness and roughness of the cell's surface now (shear_observables.hpp).
+void measure_surface(const membrane::MembraneModel& model, std::span<const Vec3> positions_um,
+                     ShearPoint& point) {
   membrane::CellGeometry geometry(model.topology().triangle_count(), model.topology().edge_count());
   membrane::measure_cell_geometry(positions_um, model.triangles(), model.topology(), geometry);
-  return dihedral_change_rms_rad(geometry.dihedral_angles_rad,
-                                 model.reference().dihedral_angles_rad);
+  const auto& reference_rad = model.reference().dihedral_angles_rad;
+  point.smoothness_rad = dihedral_change_rms_rad(geometry.dihedral_angles_rad, reference_rad);
+  point.roughness_rad =
+      dihedral_roughness_rad(geometry.dihedral_angles_rad, reference_rad, model.topology());
 }
 
 std::size_t steps_for(double strain, double strain_rate_lu) {
@@ -392,7 +396,7 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
   point.force_cap_steps = simulation.capped_steps_per_cell().at(0);
   const auto positions_um = positions_now_um(simulation);
   point.shape = measure_shear_shape(positions_um);
-  point.smoothness_rad = smoothness_rad(model, positions_um);
+  measure_surface(model, positions_um, point);
   point.tank_treading_hz = phase->frequency_hz() / plan.viscosity_scale;
   point.steps = simulation.time_step();
   point.strain = simulation.time_s() * time_unit_rate;

@@ -132,7 +132,8 @@ struct ShearPoint {
   ShearRatePlan plan;
   ShearShape shape;
   double tank_treading_hz = 0.0;  // physical; 0 at rate 0
-  double smoothness_rad = 0.0;
+  double smoothness_rad = 0.0;    // dihedral_change_rms_rad: overall and mesh-scale bending
+  double roughness_rad = 0.0;     // dihedral_roughness_rad: the mesh-scale part only
   bool steady = false;
   double strain = 0.0;  // simulated rate * simulated time (rate 0: in its time unit)
   double time_s = 0.0;  // physical time: the simulated time times the viscosity scale

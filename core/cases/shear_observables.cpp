@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 namespace rbcsim::cases {
 namespace {
@@ -24,6 +25,64 @@ double extent_along(std::span<const Vec3> positions_um, const Vec3& direction) {
     high = std::max(high, projection);
   }
   return high - low;
+}
+
+// Per vertex, the mean of values_per_edge over the edges of its star.
+std::vector<double> star_means(std::span<const double> values_per_edge,
+                               const mesh::MeshTopology& topology) {
+  const auto& offsets = topology.vertex_edge_offsets();
+  const auto& star_edges = topology.vertex_edges();
+  std::vector<double> means(topology.vertex_count(), 0.0);
+  for (std::size_t v = 0; v < means.size(); ++v) {
+    const auto first = static_cast<std::size_t>(offsets[v]);
+    const auto last = static_cast<std::size_t>(offsets[v + 1]);
+    for (std::size_t k = first; k < last; ++k) {
+      means[v] += values_per_edge[static_cast<std::size_t>(star_edges[k])];
+    }
+    means[v] /= static_cast<double>(last - first);
+  }
+  return means;
+}
+
+// The vertex at the other end of `edge` from `vertex`.
+std::size_t neighbour_across(const mesh::Edge& edge, std::size_t vertex) {
+  const auto vertex0 = static_cast<std::size_t>(edge.vertex0);
+  return vertex0 == vertex ? static_cast<std::size_t>(edge.vertex1) : vertex0;
+}
+
+// Per vertex, its value minus the mean over its one-ring neighbours (the umbrella Laplacian).
+std::vector<double> minus_one_ring_means(std::span<const double> values_per_vertex,
+                                         const mesh::MeshTopology& topology) {
+  const auto& offsets = topology.vertex_edge_offsets();
+  const auto& star_edges = topology.vertex_edges();
+  const auto& edges = topology.edges();
+  std::vector<double> residuals(values_per_vertex.size(), 0.0);
+  for (std::size_t v = 0; v < residuals.size(); ++v) {
+    const auto first = static_cast<std::size_t>(offsets[v]);
+    const auto last = static_cast<std::size_t>(offsets[v + 1]);
+    double ring_sum = 0.0;
+    for (std::size_t k = first; k < last; ++k) {
+      ring_sum +=
+          values_per_vertex[neighbour_across(edges[static_cast<std::size_t>(star_edges[k])], v)];
+    }
+    residuals[v] = values_per_vertex[v] - ring_sum / static_cast<double>(last - first);
+  }
+  return residuals;
+}
+
+std::vector<double> dihedral_changes(std::span<const double> dihedral_angles_rad,
+                                     std::span<const double> reference_angles_rad) {
+  std::vector<double> changes(dihedral_angles_rad.size());
+  for (std::size_t e = 0; e < changes.size(); ++e) {
+    changes[e] = dihedral_angles_rad[e] - reference_angles_rad[e];
+  }
+  return changes;
+}
+
+double root_mean_square(std::span<const double> values) {
+  double sum = 0.0;
+  for (const double value : values) sum += value * value;
+  return std::sqrt(sum / static_cast<double>(values.size()));
 }
 
 }  // namespace
@@ -69,12 +128,18 @@ double dihedral_change_rms_rad(std::span<const double> dihedral_angles_rad,
   if (dihedral_angles_rad.size() != reference_angles_rad.size() || dihedral_angles_rad.empty()) {
     throw std::invalid_argument("dihedral_change_rms_rad: one angle per edge in both spans");
   }
-  double sum = 0.0;
-  for (std::size_t e = 0; e < dihedral_angles_rad.size(); ++e) {
-    const double change = dihedral_angles_rad[e] - reference_angles_rad[e];
-    sum += change * change;
+  return root_mean_square(dihedral_changes(dihedral_angles_rad, reference_angles_rad));
+}
+
+double dihedral_roughness_rad(std::span<const double> dihedral_angles_rad,
+                              std::span<const double> reference_angles_rad,
+                              const mesh::MeshTopology& topology) {
+  const std::size_t edge_count = topology.edge_count();
+  if (dihedral_angles_rad.size() != edge_count || reference_angles_rad.size() != edge_count) {
+    throw std::invalid_argument("dihedral_roughness_rad: one angle per edge in both spans");
   }
-  return std::sqrt(sum / static_cast<double>(dihedral_angles_rad.size()));
+  const auto changes = dihedral_changes(dihedral_angles_rad, reference_angles_rad);
+  return root_mean_square(minus_one_ring_means(star_means(changes, topology), topology));
 }
 
 double in_plane_angle_rad(const Vec3& point, const Vec3& centre) {

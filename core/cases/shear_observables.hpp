@@ -13,13 +13,18 @@
 //                 from +z when u_x grows with y);
 //   smoothness    the RMS over the interior edges of the change of the dihedral angle from the
 //                 stress-free reference, rad: 0 for a rigid motion, large for a wrinkled or
-//                 creased surface (the paper's "unnatural deformations" without F_ad and F_tc).
+//                 creased surface, but on a coarse mesh just as large for the cell's overall,
+//                 smooth deformation (a disc stretched into an ellipsoid);
+//   roughness     the mesh-scale part of that change only (dihedral_roughness_rad below): near 0
+//                 for a smooth deformation, raised by a wrinkle, crease, buckle or kink (the
+//                 paper's "unnatural deformations" of §3.2, Figs. 9-11, without F_ad and F_tc).
 #pragma once
 
 #include <span>
 #include <vector>
 
 #include "common/vec3.hpp"
+#include "mesh/topology.hpp"
 
 namespace rbcsim::cases {
 
@@ -41,6 +46,29 @@ ShearShape measure_shear_shape(std::span<const Vec3> positions_um);
 // RMS of (theta - theta0) over the edges, rad; the spans have one angle per edge.
 double dihedral_change_rms_rad(std::span<const double> dihedral_angles_rad,
                                std::span<const double> reference_angles_rad);
+
+// Mesh-scale roughness, rad: a high-pass filter of the dihedral changes delta_e = theta_e -
+// theta0_e in two steps.
+//  1. Per vertex, the mean of delta_e over the edges of its star. For a smooth surface delta_e
+//     is about the edge's hinge length times the change of the normal curvature across the edge,
+//     which depends on the edge's direction once the deformation is anisotropic (a stretched
+//     sphere): the edges' own neighbours (other directions) would differ by O(delta) and a
+//     per-edge Laplacian does not separate scales. Averaged over the n >= 5 nearly equally spaced
+//     directions of a star, a quadratic form gives its trace: the vertex mean sees the change of
+//     the mean curvature only, direction-free.
+//  2. Per vertex, that mean minus the mean of it over the one-ring neighbours (the umbrella
+//     Laplacian). For a field f smooth on the scale R of the cell the one-ring (radius h, the
+//     edge length) mean is f + (h^2 / 4) lap f + O(h^4): the residual is ~ (h / R)^2 / 4 of the
+//     change, while a wrinkle of wavelength lambda ~ a few h keeps a fraction
+//     1 - J0(2 pi h / lambda) ~ 1 of its amplitude.
+// The RMS of the residual over the vertices is returned. Zero for a rigid motion (theta = theta0);
+// for an affine stretch of an icosphere the residual is set by the mesh's irregularity (star
+// directions not quite equally spaced), a few % of dihedral_change_rms_rad (bound and derivation
+// in tests/cases/shear_observables_test.cpp). Throws std::invalid_argument unless both spans
+// have one angle per edge of `topology`.
+double dihedral_roughness_rad(std::span<const double> dihedral_angles_rad,
+                              std::span<const double> reference_angles_rad,
+                              const mesh::MeshTopology& topology);
 
 // The angle of `point` about `centre` in the x-y plane, rad in (-pi, pi].
 double in_plane_angle_rad(const Vec3& point, const Vec3& centre);

@@ -22,6 +22,7 @@ nlohmann::ordered_json rate_entry(const ShearPoint& point) {
       {"inclination_deg", number_or_null(point.shape.inclination_deg)},
       {"tank_treading_hz", number_or_null(point.tank_treading_hz)},
       {"smoothness_rad", number_or_null(point.smoothness_rad)},
+      {"roughness_rad", number_or_null(point.roughness_rad)},
       {"steady", point.steady},
       {"simulated_shear_rate_per_s", plan.simulated_shear_rate_per_s},
       {"simulated_kinematic_viscosity_m2_per_s", plan.simulated_kinematic_viscosity_m2_per_s},
@@ -71,6 +72,7 @@ ShearPoint shear_point_from_record(const nlohmann::json& record, const std::stri
                  number("inclination_deg")};
   point.tank_treading_hz = number("tank_treading_hz");
   point.smoothness_rad = number("smoothness_rad");
+  point.roughness_rad = number("roughness_rad");
   point.steady = record.value("steady", false);
   point.strain = number("strain");
   point.time_s = number("time_s");
@@ -89,6 +91,7 @@ std::vector<std::string> shear_table_columns() {
           "inclination_deg",
           "tank_treading_hz",
           "smoothness_rad",
+          "roughness_rad",
           "steady",
           "simulated_shear_rate_per_s",
           "simulated_kinematic_viscosity_m2_per_s",
@@ -108,6 +111,7 @@ std::vector<double> shear_table_row(const ShearPoint& point) {
           point.shape.inclination_deg,
           point.tank_treading_hz,
           point.smoothness_rad,
+          point.roughness_rad,
           point.steady ? 1.0 : 0.0,
           plan.simulated_shear_rate_per_s,
           plan.simulated_kinematic_viscosity_m2_per_s,

@@ -169,6 +169,7 @@ TEST(ShearRun, RestKeepsTheDiameterAndShearStretches) {
   EXPECT_NEAR(points[0].shape.length_um, diameter_um, 0.01 * diameter_um);
   EXPECT_TRUE(points[0].steady) << points[0].stop_reason;
   EXPECT_LT(points[0].smoothness_rad, 0.01);
+  EXPECT_LT(points[0].roughness_rad, points[0].smoothness_rad);
   EXPECT_GT(points[1].shape.length_um, 1.03 * diameter_um);
   EXPECT_FALSE(points[1].steady);  // 4 strains are too few
   EXPECT_NEAR(points[1].strain, 4.0, 0.01);

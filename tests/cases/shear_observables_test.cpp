@@ -1,5 +1,6 @@
 // The shear observables against shapes whose answers are known: an ellipsoid (length, breadth,
-// deformation index, inclination), a point turning at a known frequency, dihedral changes.
+// deformation index, inclination), a point turning at a known frequency, dihedral changes, and the
+// roughness against a rigid motion, a smooth stretch and imposed wrinkles of a sphere.
 #include "cases/shear_observables.hpp"
 
 #include <gtest/gtest.h>
@@ -8,6 +9,7 @@
 #include <numbers>
 #include <vector>
 
+#include "mesh/geometry.hpp"
 #include "mesh/icosphere.hpp"
 
 namespace rbcsim::cases {
@@ -92,6 +94,97 @@ TEST(ShearObservables, DihedralChangeRms) {
   EXPECT_DOUBLE_EQ(dihedral_change_rms_rad(angles, reference), std::sqrt(0.11 / 3.0));
   EXPECT_EQ(dihedral_change_rms_rad(reference, reference), 0.0);
   EXPECT_THROW(dihedral_change_rms_rad(angles, std::vector<double>{0.0}), std::invalid_argument);
+}
+
+// The roughness fixtures: the level-4 unit icosphere (2562 vertices, mean edge h ~ 0.0755) as the
+// stress-free reference and the dihedral angles of deformed copies of it.
+struct RoughnessFixture {
+  mesh::TriangleMesh sphere = mesh::unit_icosphere(4);
+  mesh::MeshTopology topology = mesh::MeshTopology::build(sphere);
+  std::vector<double> reference_rad = angles_of(sphere.positions_um);
+
+  std::vector<double> angles_of(std::span<const Vec3> positions_um) const {
+    std::vector<double> angles;
+    for (const mesh::Edge& edge : topology.edges()) {
+      angles.push_back(mesh::signed_dihedral_angle_rad(positions_um, edge));
+    }
+    return angles;
+  }
+  double old_rms_rad(std::span<const Vec3> positions_um) const {
+    return dihedral_change_rms_rad(angles_of(positions_um), reference_rad);
+  }
+  double roughness_rad(std::span<const Vec3> positions_um) const {
+    return dihedral_roughness_rad(angles_of(positions_um), reference_rad, topology);
+  }
+  double mean_edge_length() const {
+    double sum = 0.0;
+    for (const mesh::Edge& edge : topology.edges()) {
+      sum += mesh::edge_length_um(sphere.positions_um, edge);
+    }
+    return sum / static_cast<double>(topology.edge_count());
+  }
+  // The sphere with the radial wrinkle r = 1 + amplitude sin(2 pi x / wavelength).
+  std::vector<Vec3> wrinkled(double amplitude, double wavelength) const {
+    std::vector<Vec3> positions;
+    for (const Vec3& p : sphere.positions_um) {
+      positions.push_back(
+          p * (1.0 + amplitude * std::sin(2.0 * std::numbers::pi * p.x() / wavelength)));
+    }
+    return positions;
+  }
+};
+
+TEST(ShearObservables, RoughnessIsZeroForARigidMotion) {
+  const RoughnessFixture fixture;
+  std::vector<Vec3> moved;
+  for (const Vec3& p : fixture.sphere.positions_um) {
+    moved.push_back(Vec3(0.6 * p.x() - 0.8 * p.y(), 0.8 * p.x() + 0.6 * p.y(), p.z()) +
+                    Vec3(2.0, -1.0, 0.5));
+  }
+  // Only the rounding of the angles' acos/atan2 (~1e-8 near theta ~ 0.08) is left.
+  EXPECT_LT(fixture.roughness_rad(moved), 1e-7);
+  EXPECT_LT(fixture.old_rms_rad(moved), 1e-7);
+}
+
+// The affine stretch 1.3 x 0.8 x 1.0 is smooth on the cell's scale R = 1: its dihedral changes
+// are ~ 0.01 rad (the old RMS, clearly non-zero). Bound on the roughness: (i) the umbrella
+// Laplacian leaves (h / R)^2 / 4 ~ 1.4e-3 of a change smooth on the scale R; (ii) the star mean
+// is direction-free only for equally spaced edge directions; the icosphere's star angles differ
+// from 2 pi / n by up to ~10 % (largest near the 12 five-valent vertices), which leaves about that
+// fraction of the anisotropic change, i.e. at most ~5 % as an RMS. Bound: 5 % of the old RMS.
+TEST(ShearObservables, RoughnessIgnoresASmoothStretch) {
+  const RoughnessFixture fixture;
+  std::vector<Vec3> stretched;
+  for (const Vec3& p : fixture.sphere.positions_um) {
+    stretched.push_back(Vec3(1.3 * p.x(), 0.8 * p.y(), p.z()));
+  }
+  const double old_rms = fixture.old_rms_rad(stretched);
+  EXPECT_GT(old_rms, 0.005);
+  EXPECT_LT(fixture.roughness_rad(stretched), 0.05 * old_rms);
+}
+
+// A wrinkle of wavelength 4 h keeps a large part of its dihedral change through the filter:
+// the star mean halves a curvature along one direction and keeps J0(k h / 2) ~ 0.85 of it, the
+// umbrella Laplacian keeps 1 - J0(k h) ~ 0.5 (k h = pi / 2): about a fifth overall. So the
+// roughness is at least a tenth of the old RMS, at least 20 times the stretch's bound above, and
+// linear in the (small) amplitude.
+TEST(ShearObservables, RoughnessSeesAWrinkle) {
+  const RoughnessFixture fixture;
+  const double wavelength = 4.0 * fixture.mean_edge_length();
+  const auto small = fixture.wrinkled(0.01, wavelength);
+  const auto large = fixture.wrinkled(0.02, wavelength);
+  const double small_roughness = fixture.roughness_rad(small);
+  EXPECT_GT(small_roughness, 0.1 * fixture.old_rms_rad(small));
+  const double stretch_bound_rad = 0.05 * 0.01;  // 5 % of the stretch's old RMS (< 0.01)
+  EXPECT_GT(small_roughness, 20.0 * stretch_bound_rad);
+  EXPECT_NEAR(fixture.roughness_rad(large) / small_roughness, 2.0, 0.2);
+}
+
+TEST(ShearObservables, RoughnessNeedsOneAnglePerEdge) {
+  const RoughnessFixture fixture;
+  EXPECT_THROW(
+      dihedral_roughness_rad(fixture.reference_rad, std::vector<double>{0.0}, fixture.topology),
+      std::invalid_argument);
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 // the coarse setting (642 vertices, dx = 0.75 um, k_l doubled; README) with the default
 // steady-state criterion. Asserts what must hold whatever the parameters (the cell at rest keeps
 // its diameter; the discocyte's length grows with the rate; with all six terms no rate fails);
-// prints length, deformation index, inclination, tank-treading frequency and smoothness, which
+// prints length, deformation index, inclination, tank-treading frequency, smoothness and
+// roughness, which
 // are findings, not pass/fail bounds.
 #include <gtest/gtest.h>
 
@@ -47,13 +48,15 @@ TEST_P(ValidateShear, LengthAgainstShearRate) {
   const auto points = cases::run_shear_sweep(model, cell, engine, settings, plans, 2, {});
   const double diameter_um = cases::largest_vertex_distance_um(cell.positions_um);
   std::printf("%s, %s F_ad and F_tc\n", morphology.c_str(), new_forces ? "with" : "without");
-  std::printf("rate_1/s      Ca  length_um     DI  incl_deg  tt_hz  smooth_rad  strain steady\n");
+  std::printf(
+      "rate_1/s      Ca  length_um     DI  incl_deg  tt_hz  smooth_rad  rough_rad  strain "
+      "steady\n");
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = points[i];
-    std::printf("%8.0f %7.3f %10.3f %6.3f %9.1f %6.1f %11.4f %7.1f %s\n", p.plan.shear_rate_per_s,
-                p.plan.capillary_number, p.shape.length_um, p.shape.deformation_index,
-                p.shape.inclination_deg, p.tank_treading_hz, p.smoothness_rad, p.strain,
-                p.steady ? "yes" : "no");
+    std::printf("%8.0f %7.3f %10.3f %6.3f %9.1f %6.1f %11.4f %10.4f %7.1f %s\n",
+                p.plan.shear_rate_per_s, p.plan.capillary_number, p.shape.length_um,
+                p.shape.deformation_index, p.shape.inclination_deg, p.tank_treading_hz,
+                p.smoothness_rad, p.roughness_rad, p.strain, p.steady ? "yes" : "no");
     // Without F_ad and F_tc a failure (a bending deviation at its limit: a crease) is the paper's
     // "unnatural deformation", a finding; with all six terms no rate may fail.
     if (new_forces) {

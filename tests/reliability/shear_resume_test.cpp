@@ -80,6 +80,7 @@ void expect_same(const ShearPoint& resumed, const ShearPoint& straight) {
   EXPECT_EQ(resumed.shape.breadth_um, straight.shape.breadth_um);
   EXPECT_EQ(resumed.shape.inclination_deg, straight.shape.inclination_deg);
   EXPECT_EQ(resumed.smoothness_rad, straight.smoothness_rad);
+  EXPECT_EQ(resumed.roughness_rad, straight.roughness_rad);
   EXPECT_EQ(resumed.tank_treading_hz, straight.tank_treading_hz);
 }
 
