@@ -1,6 +1,6 @@
 // One cell in simple shear (DESIGN.md §4 shear): cell length against shear rate per morphology,
 // with and without the area-difference and total-curvature terms (the paper's Figs. 9-11), then
-// the deformation index and surface smoothness of every run, and each sweep as a table.
+// the deformation index, surface smoothness and roughness of every run, and each sweep as a table.
 #include <algorithm>
 
 #include "report/markup.hpp"
@@ -88,6 +88,25 @@ std::optional<Figure> sweep_figure(const RunList& runs, const std::vector<std::s
   return Figure{svg::render_line_plot(plot), caption};
 }
 
+// The plots of one observable against the shear rate, all runs in each.
+struct SweepPlot {
+  std::string_view y_key;
+  const char* y_label;
+  const char* title;
+  const char* caption;
+};
+constexpr SweepPlot kSweepPlots[] = {
+    {"deformation_index", "deformation index", "Deformation index vs shear rate",
+     "Taylor deformation index (L - B)/(L + B) at steady state."},
+    {"smoothness_rad", "smoothness (rad)", "Surface smoothness vs shear rate",
+     "RMS change of the dihedral angles from the stress-free shape: the overall bending of the "
+     "cell and any mesh-scale wrinkles together."},
+    {"roughness_rad", "roughness (rad)", "Surface roughness vs shear rate",
+     "Mesh-scale part of the dihedral change (its vertex mean minus the one-ring mean): near 0 "
+     "for a smooth deformation, raised by wrinkles, creases and kinks, the paper's \"unnatural "
+     "deformations\" without F_ad and F_tc."},
+};
+
 Table sweep_table(const RunDirectory& run, const std::string& label) {
   const auto rates = run.section().at("rates");
   std::vector<LabelledObject> rows;
@@ -115,17 +134,11 @@ Section build_shear_section(const RunList& all_runs) {
                  [&morphology](const RunDirectory* run) { return run->morphology == morphology; });
     section.blocks.emplace_back(length_figure(morphology, of_morphology, styles));
   }
-  if (auto figure = sweep_figure(runs, labels, styles, "deformation_index", "deformation index",
-                                 "Deformation index vs shear rate",
-                                 "Taylor deformation index (L - B)/(L + B) at steady state.")) {
-    section.blocks.emplace_back(std::move(*figure));
-  }
-  if (auto figure = sweep_figure(
-          runs, labels, styles, "smoothness_rad", "smoothness (rad)",
-          "Surface smoothness vs shear rate",
-          "Smoothness of the deformed membrane (from the distribution of dihedral angles): the "
-          "paper's \"unnatural deformations\" without F_ad and F_tc as a number.")) {
-    section.blocks.emplace_back(std::move(*figure));
+  for (const auto& plot : kSweepPlots) {
+    if (auto figure = sweep_figure(runs, labels, styles, plot.y_key, plot.y_label, plot.title,
+                                   plot.caption)) {
+      section.blocks.emplace_back(std::move(*figure));
+    }
   }
   for (std::size_t i = 0; i < runs.size(); ++i) {
     section.blocks.emplace_back(sweep_table(*runs[i], labels[i]));

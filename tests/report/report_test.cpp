@@ -6,9 +6,9 @@
 
 #include "common/errors.hpp"
 #include "report/run_fixtures.hpp"
-#include "support/xml_document.hpp"
 #include "support/run_rbcsim.hpp"
 #include "support/scratch_directory.hpp"
+#include "support/xml_document.hpp"
 
 namespace {
 
@@ -101,6 +101,7 @@ TEST_F(ReportOfStandardRuns, ShearHasALengthPlotPerMorphologyWithEachTermSet) {
   }
   figure("Deformation index vs shear rate");
   figure("Surface smoothness vs shear rate");
+  figure("Surface roughness vs shear rate");
 }
 
 TEST_F(ReportOfStandardRuns, CapillaryHasDeformationOverTimeAndTransitBars) {

@@ -116,6 +116,7 @@ inline FixtureRun shear_run(const std::string& morphology, const std::vector<std
                      {"inclination_deg", 45 - rate / 100},
                      {"tank_treading_hz", rate / (4 * std::numbers::pi)},
                      {"smoothness_rad", 0.05 + rate * 1e-5},
+                     {"roughness_rad", 0.01 + rate * 1e-6},
                      {"steady", true}});
   }
   run.section = {{"rates", rates}};
