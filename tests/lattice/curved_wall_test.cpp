@@ -23,7 +23,6 @@ namespace {
 using testing::relative_l2_error_x;
 
 constexpr double kPeakVelocity = 0.01;
-constexpr double kMagicParameter = 3.0 / 16.0;  // the default TRT Lambda
 
 FluidParameters bouzidi_trt(double tau) {
   FluidParameters parameters;
