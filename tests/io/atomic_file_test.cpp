@@ -1,7 +1,10 @@
 #include "io/atomic_file.hpp"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -41,6 +44,37 @@ TEST(AtomicFile, FailedWriteLeavesOldFileAndNoTemporary) {
                std::runtime_error);
   EXPECT_EQ(read_all(directory / "result.json"), "old");
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(directory), {}), 1);
+}
+
+// SIGKILL in the middle of a write (the process cannot clean up): the target keeps its old
+// content, the half-written bytes are only in a temporary sibling (".result.json.tmp<random>")
+// that no reader takes for the result. A plain write to the target would leave "half" there.
+TEST(AtomicFile, KilledMidWriteLeavesOldFileAndOnlyAHiddenTemporary) {
+  const auto directory = fresh_directory("atomic_killed");
+  rbcsim::io::write_text_atomically(directory / "result.json", "old");
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    rbcsim::io::write_file_atomically(directory / "result.json", [](std::ostream& out) {
+      out << "half" << std::flush;
+      std::raise(SIGKILL);
+    });
+    _exit(0);  // not reached
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  EXPECT_EQ(WTERMSIG(status), SIGKILL);
+  EXPECT_EQ(read_all(directory / "result.json"), "old");
+  std::size_t temporaries = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(directory)) {
+    const auto name = entry.path().filename().string();
+    if (name == "result.json") continue;
+    EXPECT_TRUE(name.starts_with(".result.json.tmp")) << name;
+    EXPECT_EQ(read_all(entry.path()), "half");
+    ++temporaries;
+  }
+  EXPECT_EQ(temporaries, 1u);
 }
 
 }  // namespace

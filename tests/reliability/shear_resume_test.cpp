@@ -171,7 +171,7 @@ TEST(ShearResume, ResumeThroughTheBinaryKeepsFinishedRatesAndRewritesTheSameResu
 TEST(ShearResume, SigintWritesTheRatesDoneSoFarAndACheckpoint) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
-  EXPECT_EQ(rbcsim::testing::run_rbcsim_interrupted_once(
+  EXPECT_EQ(rbcsim::testing::run_rbcsim_signalled_once(
                 run_dir / shear_rate_directory(0),
                 "shear --quiet --threads 1 --rates 100 --max-strain 1000 --set mesh.subdivisions=3"
                 " --set shear.steady_tolerance_per_strain=1e-12"

@@ -183,7 +183,7 @@ TEST(StretchResume, ResumeThroughTheBinaryRewritesTheSameResults) {
 TEST(StretchResume, SigintWritesTheForcesDoneSoFarAndACheckpoint) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
-  EXPECT_EQ(rbcsim::testing::run_rbcsim_interrupted_once(
+  EXPECT_EQ(rbcsim::testing::run_rbcsim_signalled_once(
                 run_dir / "shapes" / "stretch_000.vtp",
                 "stretch --quiet --threads 1 --mode fluid --forces 0:40/41"
                 " --set mesh.subdivisions=2 --set lattice.spacing_um=2"

@@ -30,17 +30,19 @@ inline RunResult run_rbcsim(const std::string& arguments, const std::filesystem:
   return {exit_code, read_text(out), read_text(err)};
 }
 
-// Starts the binary as run_rbcsim does, its output discarded, and sends it SIGINT (as Ctrl-C
-// would) once `file` exists: a stage of the run reached whatever the machine's load (a sanitizer
-// build, tests in parallel), where a fixed delay can fall before the run has begun. Waits a
-// minute at most. The exit code, -1 if it did not exit by itself.
-inline int run_rbcsim_interrupted_once(const std::filesystem::path& file,
-                                       const std::string& arguments) {
+// Starts the binary as run_rbcsim does, its output discarded, and sends it `signal` (INT as
+// Ctrl-C would, TERM, KILL) once `file` exists: a stage of the run reached whatever the machine's
+// load (a sanitizer build, tests in parallel), where a fixed delay can fall before the run has
+// begun. Waits a minute at most. The exit code, -1 if it did not exit by itself (killed).
+inline int run_rbcsim_signalled_once(const std::filesystem::path& file,
+                                     const std::string& arguments,
+                                     const std::string& signal = "INT") {
   const std::string command =
       std::string("'") + RBCSIM_BINARY + "' " + arguments +
       " >/dev/null 2>&1 </dev/null & pid=$!; for i in $(seq 600); do [ -e '" + file.string() +
-      "' ] && break; sleep 0.1; done; kill -INT $pid; wait $pid";
+      "' ] && break; sleep 0.1; done; kill -" + signal + " $pid; wait $pid";
   const int status = std::system(command.c_str());
+  // A child killed by a signal is reported by the shell as exit code 128 + the signal's number.
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
