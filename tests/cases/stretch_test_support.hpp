@@ -2,10 +2,16 @@
 // a stretch run that keeps every equilibrium shape with its forces.
 #pragma once
 
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cstdio>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "cases/stretch_case.hpp"
+#include "cases/stretch_reference.hpp"
 #include "mesh/import.hpp"
 
 namespace rbcsim::cases::testing {
@@ -42,6 +48,27 @@ inline ObservedRun run_and_observe(const membrane::MembraneModel& model, const S
          state.membrane_forces ? state.membrane_forces->total_energy_pN_um() : 0.0});
   });
   return observed;
+}
+
+// What every Validate stretch curve must show and prints against Mills et al. (2004): the axial
+// diameter grows and the transverse one shrinks with the force, all 13 forces are compared, and
+// the RMS deviations and the points inside the error bars are printed (a finding, not a bound).
+// `run_summary` completes the last line (steps, wall time).
+inline void expect_and_print_mills_comparison(std::span<const StretchPoint> points,
+                                              std::span<const StretchReferencePoint> reference,
+                                              const std::string& run_summary) {
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    EXPECT_GT(points[i].axial_um, points[i - 1].axial_um) << points[i].force_pN;
+    EXPECT_LT(points[i].transverse_um, points[i - 1].transverse_um) << points[i].force_pN;
+  }
+  const auto comparison = compare_with_reference(points, reference);
+  EXPECT_EQ(comparison.point_count, 13u);
+  std::printf(
+      "RMS vs Mills: axial %.3f um, transverse %.3f um; inside the error bars: %zu of 13 "
+      "(axial %zu, transverse %zu); %s on %d threads\n",
+      *comparison.rms_axial_um, *comparison.rms_transverse_um, comparison.inside_error_bars,
+      comparison.axial_inside_error_bar, comparison.transverse_inside_error_bar,
+      run_summary.c_str(), omp_get_max_threads());
 }
 
 }  // namespace rbcsim::cases::testing
