@@ -20,6 +20,7 @@
 #include "coupling/checkpoint.hpp"
 #include "setup/capillary_from_config.hpp"
 #include "setup/cell_from_config.hpp"
+#include "support/interrupt_scope.hpp"
 #include "support/run_rbcsim.hpp"
 #include "support/scratch_directory.hpp"
 
@@ -34,11 +35,7 @@ constexpr std::size_t kSampleSteps = 4;
 // layout there, and not a multiple of kSampleSteps.
 constexpr std::size_t kInterruptStep = 13;
 
-// Clears the flag whatever the test does, so later tests in this process are not interrupted.
-struct InterruptScope {
-  InterruptScope() { clear_interrupt(); }
-  ~InterruptScope() { clear_interrupt(); }
-};
+using rbcsim::testing::InterruptScope;
 
 // The coarse capillary of capillary_case_test.cpp (dx = 1 um, the 162-vertex cell).
 const std::vector<std::string> kCoarseAssignments = {

@@ -22,6 +22,7 @@
 #include "membrane/membrane_model.hpp"
 #include "membrane/relaxation.hpp"
 #include "mesh/cell_shapes.hpp"
+#include "support/interrupt_scope.hpp"
 #include "support/json_schema_check.hpp"
 #include "support/run_rbcsim.hpp"
 #include "support/scratch_directory.hpp"
@@ -32,11 +33,7 @@ namespace fs = std::filesystem;
 using rbcsim::testing::read_text;
 using rbcsim::testing::ScratchDirectory;
 
-// Clears the flag whatever the test does, so later tests in this process are not interrupted.
-struct InterruptScope {
-  InterruptScope() { rbcsim::clear_interrupt(); }
-  ~InterruptScope() { rbcsim::clear_interrupt(); }
-};
+using rbcsim::testing::InterruptScope;
 
 rbcsim::cases::StretchCell coarse_cell() {
   return rbcsim::cases::prepare_stretch_cell(

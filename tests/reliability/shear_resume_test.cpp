@@ -18,6 +18,7 @@
 #include "common/interrupt.hpp"
 #include "coupling/checkpoint.hpp"
 #include "mesh/cell_shapes.hpp"
+#include "support/interrupt_scope.hpp"
 #include "support/run_rbcsim.hpp"
 #include "support/scratch_directory.hpp"
 
@@ -30,11 +31,7 @@ using rbcsim::testing::ScratchDirectory;
 // populations post-collision in the swapped (AA) layout, which the checkpoint restores as is.
 constexpr std::size_t kInterruptStep = 181;  // past half the run: tank treading is measured there
 
-// Clears the flag whatever the test does, so later tests in this process are not interrupted.
-struct InterruptScope {
-  InterruptScope() { clear_interrupt(); }
-  ~InterruptScope() { clear_interrupt(); }
-};
+using rbcsim::testing::InterruptScope;
 
 const mesh::TriangleMesh& coarse_cell() {
   static const mesh::TriangleMesh cell = in_shear_frame(mesh::generate_cell("discocyte", 3));

@@ -26,6 +26,7 @@
 #include "common/thread_count_scope.hpp"
 #include "coupling/checkpoint.hpp"
 #include "mesh/discocyte.hpp"
+#include "support/interrupt_scope.hpp"
 #include "support/run_rbcsim.hpp"
 #include "support/scratch_directory.hpp"
 
@@ -34,11 +35,7 @@ namespace {
 
 using rbcsim::testing::ScratchDirectory;
 
-// Clears the flag whatever the test does, so later tests in this process are not interrupted.
-struct InterruptScope {
-  InterruptScope() { clear_interrupt(); }
-  ~InterruptScope() { clear_interrupt(); }
-};
+using rbcsim::testing::InterruptScope;
 
 struct CoarseStretch {
   StretchCell cell = prepare_stretch_cell(mesh::discocyte_mesh({}, 2), {});
