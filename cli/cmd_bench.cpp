@@ -23,7 +23,8 @@
 #include "setup/cell_from_config.hpp"
 #include "setup/membrane_from_config.hpp"
 
-namespace rbcsim::cli {
+// A namespace of its own: the command's helpers stay apart from the other commands'.
+namespace rbcsim::cli::bench_command {
 namespace {
 
 using Json = nlohmann::ordered_json;
@@ -325,4 +326,4 @@ void attach_bench_command(CLI::App& application) {
 const bool registered = register_command({"bench", 95, attach_bench_command});
 
 }  // namespace
-}  // namespace rbcsim::cli
+}  // namespace rbcsim::cli::bench_command

@@ -18,7 +18,8 @@
 #include "setup/calibrate_from_config.hpp"
 #include "setup/membrane_from_config.hpp"
 
-namespace rbcsim::cli {
+// A namespace of its own: the command's helpers stay apart from the other commands'.
+namespace rbcsim::cli::calibrate_command {
 namespace {
 
 struct CalibrateOptions {
@@ -188,4 +189,4 @@ void attach_calibrate(CLI::App& application) {
 const bool registered = register_command({"calibrate", 20, attach_calibrate});
 
 }  // namespace
-}  // namespace rbcsim::cli
+}  // namespace rbcsim::cli::calibrate_command

@@ -21,7 +21,8 @@
 #include "setup/capillary_from_config.hpp"
 #include "setup/coupling_from_config.hpp"
 
-namespace rbcsim::cli {
+// A namespace of its own: the command's helpers stay apart from the other commands'.
+namespace rbcsim::cli::capillary_command {
 namespace {
 
 // Progress lines every this many steps (when stderr is a terminal).
@@ -179,4 +180,4 @@ void attach_capillary(CLI::App& application) {
 const bool registered = register_command({"capillary", 50, attach_capillary});
 
 }  // namespace
-}  // namespace rbcsim::cli
+}  // namespace rbcsim::cli::capillary_command

@@ -8,7 +8,8 @@
 #include "config/config.hpp"
 #include "config/schema.hpp"
 
-namespace rbcsim::cli {
+// A namespace of its own: the command's helpers stay apart from the other commands'.
+namespace rbcsim::cli::config_command {
 namespace {
 
 void attach_config_command(CLI::App& application) {
@@ -33,4 +34,4 @@ void attach_config_command(CLI::App& application) {
 const bool registered = register_command({"config", 90, attach_config_command});
 
 }  // namespace
-}  // namespace rbcsim::cli
+}  // namespace rbcsim::cli::config_command

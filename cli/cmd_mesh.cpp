@@ -13,7 +13,8 @@
 #include "mesh/stl_writer.hpp"
 #include "setup/cell_from_config.hpp"
 
-namespace rbcsim::cli {
+// A namespace of its own: the command's helpers stay apart from the other commands'.
+namespace rbcsim::cli::mesh_command {
 namespace {
 
 struct GenerateOptions {
@@ -144,4 +145,4 @@ void attach_mesh(CLI::App& application) {
 const bool registered = register_command({"mesh", 10, attach_mesh});
 
 }  // namespace
-}  // namespace rbcsim::cli
+}  // namespace rbcsim::cli::mesh_command

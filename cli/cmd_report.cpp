@@ -8,7 +8,8 @@
 #include "command_registry.hpp"
 #include "report/report.hpp"
 
-namespace rbcsim::cli {
+// A namespace of its own: the command's helpers stay apart from the other commands'.
+namespace rbcsim::cli::report_command {
 namespace {
 
 struct ReportOptions {
@@ -48,4 +49,4 @@ void attach_report_command(CLI::App& application) {
 const bool registered = register_command({"report", 80, attach_report_command});
 
 }  // namespace
-}  // namespace rbcsim::cli
+}  // namespace rbcsim::cli::report_command

@@ -32,7 +32,8 @@
 #include "setup/membrane_from_config.hpp"
 #include "setup/shear_from_config.hpp"
 
-namespace rbcsim::cli {
+// A namespace of its own: the command's helpers stay apart from the other commands'.
+namespace rbcsim::cli::shear_command {
 namespace {
 
 struct ShearOptions {
@@ -286,4 +287,4 @@ void attach_shear(CLI::App& application) {
 const bool registered = register_command({"shear", 40, attach_shear});
 
 }  // namespace
-}  // namespace rbcsim::cli
+}  // namespace rbcsim::cli::shear_command

@@ -23,7 +23,8 @@
 #include "setup/membrane_from_config.hpp"
 #include "setup/stretch_from_config.hpp"
 
-namespace rbcsim::cli {
+// A namespace of its own: the command's helpers stay apart from the other commands'.
+namespace rbcsim::cli::stretch_command {
 namespace {
 
 struct StretchOptions {
@@ -259,4 +260,4 @@ void attach_stretch(CLI::App& application) {
 const bool registered = register_command({"stretch", 30, attach_stretch});
 
 }  // namespace
-}  // namespace rbcsim::cli
+}  // namespace rbcsim::cli::stretch_command

@@ -24,7 +24,7 @@ namespace {
 
 // The symmetry axis counts as z when the least-variance principal axis is this close to it: a
 // generated shape has it on z up to round-off, a mesh that does not is aligned first.
-constexpr double kAxisTolerance = 1e-6;
+constexpr double kSymmetryAxisCosineTolerance = 1e-6;
 // Tank-treading samples per check interval: the tracked point must turn by less than pi between
 // two samples (a tank-treading membrane turns at about rate / 2, 0.5 rad per unit strain; the
 // tips of an elongated cell faster).
@@ -286,7 +286,8 @@ std::unique_ptr<lattice::FluidSolver> shear_fluid(const ShearBox& box,
 
 mesh::TriangleMesh in_shear_frame(mesh::TriangleMesh mesh) {
   const Eigen::Matrix3d axes = mesh::principal_axes(mesh);
-  if (std::abs(axes.col(2).z()) < 1.0 - kAxisTolerance) mesh::align_principal_axes(mesh);
+  if (std::abs(axes.col(2).z()) < 1.0 - kSymmetryAxisCosineTolerance)
+    mesh::align_principal_axes(mesh);
   const Vec3 centroid = mesh::solid_centroid_um(mesh);
   // A proper rotation about x taking z to y: (x, y, z) -> (x, z, -y).
   for (Vec3& p : mesh.positions_um) {

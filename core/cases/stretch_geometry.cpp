@@ -12,7 +12,7 @@ namespace {
 // of the largest (smallest) principal variance: a discocyte generated on an icosphere has equal
 // in-plane variances only up to the triangulation (and rounding); a cell with a real long axis
 // differs by far more.
-constexpr double kAxisTolerance = 1e-3;
+constexpr double kPrincipalVarianceTolerance = 1e-3;
 
 bool already_in_principal_frame(const mesh::TriangleMesh& mesh) {
   Vec3 mean = Vec3::Zero();
@@ -23,8 +23,8 @@ bool already_in_principal_frame(const mesh::TriangleMesh& mesh) {
   const Vec3 variances =
       Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(covariance, Eigen::EigenvaluesOnly)
           .eigenvalues();
-  return covariance(0, 0) >= (1.0 - kAxisTolerance) * variances.maxCoeff() &&
-         covariance(2, 2) <= (1.0 + kAxisTolerance) * variances.minCoeff();
+  return covariance(0, 0) >= (1.0 - kPrincipalVarianceTolerance) * variances.maxCoeff() &&
+         covariance(2, 2) <= (1.0 + kPrincipalVarianceTolerance) * variances.minCoeff();
 }
 
 }  // namespace

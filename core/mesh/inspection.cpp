@@ -13,11 +13,11 @@
 namespace rbcsim::mesh {
 namespace {
 
-struct HalfEdge {
+struct OrientedEdgeUse {
   std::int32_t low;
   std::int32_t high;
   bool forward;  // traversed low -> high
-  bool operator<(const HalfEdge& other) const {
+  bool operator<(const OrientedEdgeUse& other) const {
     return std::tie(low, high) < std::tie(other.low, other.high);
   }
 };
@@ -112,7 +112,7 @@ void add_size(const TriangleMesh& mesh, MeshReport& report) {
 }  // namespace
 
 EdgeConnectivity analyse_edges(const TriangleMesh& mesh) {
-  std::vector<HalfEdge> half_edges;
+  std::vector<OrientedEdgeUse> half_edges;
   half_edges.reserve(3 * mesh.triangle_count());
   for (const auto& t : mesh.triangles) {
     for (int k = 0; k < 3; ++k) {

@@ -13,12 +13,12 @@ namespace rbcsim::setup {
 namespace {
 
 // "0:2000" without a step: 0, 500, ..., 2000, the spacing of the paper's Figs. 9-11.
-constexpr std::size_t kDefaultRangeCount = 5;
+constexpr std::size_t kDefaultRateCount = 5;
 
 }  // namespace
 
 std::vector<double> shear_rates_from(std::string_view text, std::string_view source) {
-  auto rates = config::parse_range(text, source, kDefaultRangeCount);
+  auto rates = config::parse_range(text, source, kDefaultRateCount);
   if (std::any_of(rates.begin(), rates.end(), [](double rate) { return rate < 0.0; })) {
     throw InputError(std::string(source),
                      "shear rates must be >= 0 1/s (the flow direction is fixed)");

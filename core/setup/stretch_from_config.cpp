@@ -18,7 +18,7 @@ namespace {
 constexpr std::string_view kReferenceForces = "mills2004";
 constexpr std::string_view kMillsFile = "mills2004_stretch.csv";
 // "0:200" without a step: every 25 pN, the spacing of a typical tweezers sweep.
-constexpr std::size_t kDefaultRangeCount = 9;
+constexpr std::size_t kDefaultForceCount = 9;
 
 cases::FluidStretchSettings fluid_stretch_settings_from(const config::Config& config) {
   cases::FluidStretchSettings settings;
@@ -55,7 +55,7 @@ std::vector<double> stretch_forces_from(std::string_view text, std::string_view 
     for (const auto& point : mills2004_stretch_reference()) forces.push_back(point.force_pN);
     return forces;
   }
-  auto forces = config::parse_range(text, source, kDefaultRangeCount);
+  auto forces = config::parse_range(text, source, kDefaultForceCount);
   if (std::any_of(forces.begin(), forces.end(), [](double f) { return f < 0.0; })) {
     throw InputError(std::string(source), "forces must be >= 0 pN (the tweezers pull)");
   }

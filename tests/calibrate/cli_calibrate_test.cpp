@@ -7,6 +7,7 @@
 #include <string>
 
 #include "support/json_schema_check.hpp"
+#include "support/relative_difference.hpp"
 #include "support/run_rbcsim.hpp"
 #include "support/scratch_directory.hpp"
 
@@ -19,9 +20,7 @@ using rbcsim::testing::ScratchDirectory;
 
 constexpr const char* kCoarseCell = "--set mesh.subdivisions=2 ";
 
-double relative(double value, double expected) {
-  return std::abs(value - expected) / std::abs(expected);
-}
+using rbcsim::testing::relative_difference;
 
 TEST(CliCalibrate, WritesARunDirectoryWhoseParametersReachTheTargets) {
   const ScratchDirectory scratch;
@@ -53,10 +52,11 @@ TEST(CliCalibrate, WritesARunDirectoryWhoseParametersReachTheTargets) {
                  scratch.path());
   ASSERT_EQ(second.exit_code, 0) << second.err;
   const auto measured = nlohmann::json::parse(second.out)["calibrate"];
-  EXPECT_LT(relative(measured["hexagonal"]["mu_uN_per_m"].get<double>(), 7.3), 1e-3);
-  EXPECT_LT(relative(measured["hexagonal"]["K_uN_per_m"].get<double>(), 20.0), 1e-3);
-  EXPECT_LT(relative(measured["overall_bending"]["bending_modulus_J"].get<double>(), 2.5e-19),
-            1e-3);
+  EXPECT_LT(relative_difference(measured["hexagonal"]["mu_uN_per_m"].get<double>(), 7.3), 1e-3);
+  EXPECT_LT(relative_difference(measured["hexagonal"]["K_uN_per_m"].get<double>(), 20.0), 1e-3);
+  EXPECT_LT(
+      relative_difference(measured["overall_bending"]["bending_modulus_J"].get<double>(), 2.5e-19),
+      1e-3);
   EXPECT_FALSE(measured.contains("hexagonal_fit"));
 }
 

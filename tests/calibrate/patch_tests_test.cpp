@@ -15,6 +15,8 @@
 #include "mesh/cell_shapes.hpp"
 #include "mesh/topology.hpp"
 
+#include "support/relative_difference.hpp"
+
 namespace {
 
 using rbcsim::cases::measure_hexagonal_patch;
@@ -23,9 +25,7 @@ using rbcsim::membrane::MembraneParameters;
 constexpr double kStrain = 1e-3;
 constexpr double kAngleRad = 1e-3;
 
-double relative(double value, double expected) {
-  return std::abs(value - expected) / std::abs(expected);
-}
+using rbcsim::testing::relative_difference;
 
 // k_s = F / dL of one link at small strain: (k_l kBT / p)(1 + 1/tau_l^2) / a (Eq. 6).
 double link_spring_pN_per_um(const MembraneParameters& parameters, double edge_um) {
@@ -42,12 +42,16 @@ TEST(HexagonalPatch, LinkNetworkMatchesTheSpringLatticeRelations) {
     parameters.k_area_kBT = 0.0;
     const auto patch = measure_hexagonal_patch(parameters, edge_um, kStrain);
     const double spring = link_spring_pN_per_um(parameters, edge_um);
-    EXPECT_LT(relative(patch.network.shear_uN_per_m, std::sqrt(3.0) / 4.0 * spring), 0.01);
-    EXPECT_LT(relative(patch.network.area_uN_per_m, std::sqrt(3.0) / 2.0 * spring), 0.01);
-    EXPECT_LT(relative(patch.network.young_uN_per_m, 2.0 / std::sqrt(3.0) * spring), 0.01);
-    EXPECT_LT(relative(patch.network.poisson_ratio, 1.0 / 3.0), 0.01);
+    EXPECT_LT(relative_difference(patch.network.shear_uN_per_m, std::sqrt(3.0) / 4.0 * spring),
+              0.01);
+    EXPECT_LT(relative_difference(patch.network.area_uN_per_m, std::sqrt(3.0) / 2.0 * spring),
+              0.01);
+    EXPECT_LT(relative_difference(patch.network.young_uN_per_m, 2.0 / std::sqrt(3.0) * spring),
+              0.01);
+    EXPECT_LT(relative_difference(patch.network.poisson_ratio, 1.0 / 3.0), 0.01);
     // The isolated patch counts its 6 rim links whole: 12 links where the tiling has 9.
-    EXPECT_LT(relative(patch.isolated.shear_uN_per_m, 4.0 / 3.0 * patch.network.shear_uN_per_m),
+    EXPECT_LT(relative_difference(patch.isolated.shear_uN_per_m,
+                                  4.0 / 3.0 * patch.network.shear_uN_per_m),
               1e-6);
     // The free centre needs no load at the affine position (point symmetry).
     EXPECT_LT(patch.largest_centre_force_pN, 1e-9 * spring * edge_um);
@@ -64,10 +68,10 @@ TEST(HexagonalPatch, AreaTermAddsItsOwnAnalyticValueToKOnly) {
   const double tau = parameters.tau_area;
   const double expected = 2.0 * parameters.k_area_kBT * parameters.thermal_energy_pN_um *
                           (1.0 + 1.0 / (tau * tau)) / (parameters.force_length_scale_um * edge_um);
-  EXPECT_LT(relative(patch.network.area_uN_per_m, expected), 0.01);
+  EXPECT_LT(relative_difference(patch.network.area_uN_per_m, expected), 0.01);
   EXPECT_LT(std::abs(patch.network.shear_uN_per_m), 1e-6 * expected);
   // Triangles are not shared between patches: both readings agree.
-  EXPECT_LT(relative(patch.isolated.area_uN_per_m, expected), 0.01);
+  EXPECT_LT(relative_difference(patch.isolated.area_uN_per_m, expected), 0.01);
 }
 
 TEST(HexagonalPatch, MeasuredUnitStiffnessMatchesTheClosedForm) {
@@ -75,9 +79,12 @@ TEST(HexagonalPatch, MeasuredUnitStiffnessMatchesTheClosedForm) {
   for (const double edge_um : {0.25, 0.22}) {
     const auto measured = rbcsim::cases::measure_patch_stiffness(parameters, edge_um, kStrain);
     const auto analytic = rbcsim::cases::analytic_patch_stiffness(parameters, edge_um);
-    EXPECT_LT(relative(measured.link_shear_uN_per_m, analytic.link_shear_uN_per_m), 0.01);
-    EXPECT_LT(relative(measured.link_area_uN_per_m, analytic.link_area_uN_per_m), 0.01);
-    EXPECT_LT(relative(measured.area_term_area_uN_per_m, analytic.area_term_area_uN_per_m), 0.01);
+    EXPECT_LT(relative_difference(measured.link_shear_uN_per_m, analytic.link_shear_uN_per_m),
+              0.01);
+    EXPECT_LT(relative_difference(measured.link_area_uN_per_m, analytic.link_area_uN_per_m), 0.01);
+    EXPECT_LT(
+        relative_difference(measured.area_term_area_uN_per_m, analytic.area_term_area_uN_per_m),
+        0.01);
   }
 }
 
@@ -94,23 +101,24 @@ TEST(TwoTrianglePatch, BendingStiffnessIsTheDihedralSpringsOwn) {
     const double tau = parameters.tau_bend_rad;
     const double kBT = parameters.thermal_energy_pN_um;
     const double factor = 1 + 1 / (tau * tau);
-    EXPECT_LT(relative(patch.moment_per_angle_pN_um,
-                       std::sqrt(3.0) / 2.0 * parameters.k_bend_kBT * kBT * factor),
+    EXPECT_LT(relative_difference(patch.moment_per_angle_pN_um,
+                                  std::sqrt(3.0) / 2.0 * parameters.k_bend_kBT * kBT * factor),
               0.01)
         << distribution;
     EXPECT_NEAR(patch.hinge_distance_um, edge_um / std::sqrt(3.0), 1e-12);
     const double expected_J = parameters.k_bend_kBT * kBT * 1e-18 * factor / 2.0;
-    EXPECT_LT(relative(patch.bending_modulus_J, expected_J), 0.01) << distribution;
+    EXPECT_LT(relative_difference(patch.bending_modulus_J, expected_J), 0.01) << distribution;
 
     const double other_edge_um = 0.8 * edge_um;
     const auto other =
         rbcsim::cases::measure_two_triangle_patch(parameters, other_edge_um, kAngleRad);
     const double scale = distribution == "paper" ? 0.8 : 1.0;
-    EXPECT_LT(relative(other.bending_modulus_J, scale * expected_J), 0.01) << distribution;
-    EXPECT_LT(
-        relative(other.bending_modulus_J,
-                 rbcsim::cases::analytic_two_triangle_bending_modulus_J(parameters, other_edge_um)),
-        0.01)
+    EXPECT_LT(relative_difference(other.bending_modulus_J, scale * expected_J), 0.01)
+        << distribution;
+    EXPECT_LT(relative_difference(other.bending_modulus_J,
+                                  rbcsim::cases::analytic_two_triangle_bending_modulus_J(
+                                      parameters, other_edge_um)),
+              0.01)
         << distribution;
   }
 }
@@ -149,9 +157,9 @@ TEST(UniformCurvatureMode, EnergiesMatchTheTermsClosedForms) {
                                  factor(parameters.tau_total_curvature) *
                                  std::pow(signed_length_um / 2.0, 2) /
                                  (L0 * rest.absolute_curvature_sum_um);
-  EXPECT_LT(relative(stiffness.bend_pN_um, bend), 1e-4);
-  EXPECT_LT(relative(stiffness.area_difference_pN_um, area_difference), 0.01);
-  EXPECT_LT(relative(stiffness.total_curvature_pN_um, total_curvature), 0.01);
+  EXPECT_LT(relative_difference(stiffness.bend_pN_um, bend), 1e-4);
+  EXPECT_LT(relative_difference(stiffness.area_difference_pN_um, area_difference), 0.01);
+  EXPECT_LT(relative_difference(stiffness.total_curvature_pN_um, total_curvature), 0.01);
 }
 
 // A cell-level term switched off in membrane.forces adds nothing; with both off there is nothing
@@ -189,11 +197,11 @@ TEST(CalibrationFits, RecoverKnownStiffnesses) {
   settings.targets.bending_modulus_J = truth.two_triangle.bending_modulus_J;
   settings.targets.overall_bending_modulus_J = truth.overall_bending_modulus_J;
   const auto fitted = rbcsim::cases::run_calibration(cell, MembraneParameters{}, settings).fitted;
-  EXPECT_LT(relative(fitted.k_link_kBT, chosen.k_link_kBT), 0.01);
-  EXPECT_LT(relative(fitted.k_area_kBT, chosen.k_area_kBT), 0.01);
-  EXPECT_LT(relative(fitted.k_bend_kBT, chosen.k_bend_kBT), 0.01);
-  EXPECT_LT(relative(fitted.k_area_difference_kBT, chosen.k_area_difference_kBT), 0.01);
-  EXPECT_LT(relative(fitted.k_total_curvature_kBT, chosen.k_total_curvature_kBT), 0.01);
+  EXPECT_LT(relative_difference(fitted.k_link_kBT, chosen.k_link_kBT), 0.01);
+  EXPECT_LT(relative_difference(fitted.k_area_kBT, chosen.k_area_kBT), 0.01);
+  EXPECT_LT(relative_difference(fitted.k_bend_kBT, chosen.k_bend_kBT), 0.01);
+  EXPECT_LT(relative_difference(fitted.k_area_difference_kBT, chosen.k_area_difference_kBT), 0.01);
+  EXPECT_LT(relative_difference(fitted.k_total_curvature_kBT, chosen.k_total_curvature_kBT), 0.01);
 
   // The same in-plane targets as E_s and Poisson.
   settings.fits = {"link_area"};
@@ -201,8 +209,8 @@ TEST(CalibrationFits, RecoverKnownStiffnesses) {
   settings.targets.young_uN_per_m = truth.hexagonal.network.young_uN_per_m;
   settings.targets.poisson_ratio = truth.hexagonal.network.poisson_ratio;
   const auto young = rbcsim::cases::run_calibration(cell, MembraneParameters{}, settings);
-  EXPECT_LT(relative(young.fitted.k_link_kBT, chosen.k_link_kBT), 0.01);
-  EXPECT_LT(relative(young.fitted.k_area_kBT, chosen.k_area_kBT), 0.01);
+  EXPECT_LT(relative_difference(young.fitted.k_link_kBT, chosen.k_link_kBT), 0.01);
+  EXPECT_LT(relative_difference(young.fitted.k_area_kBT, chosen.k_area_kBT), 0.01);
   ASSERT_TRUE(young.link_area.has_value());
   EXPECT_LT(young.link_area->relative_residual, 1e-3);
   EXPECT_FALSE(young.bend.has_value());

@@ -9,7 +9,7 @@ namespace {
 using rbcsim::config::parse_range;
 using Values = std::vector<double>;
 
-std::string error_of(const std::string& text) {
+std::string range_error(const std::string& text) {
   try {
     parse_range(text, "--rates", 5);
   } catch (const rbcsim::InputError& error) {
@@ -43,20 +43,20 @@ TEST(Range, CountGivesEvenlySpacedValues) {
 }
 
 TEST(Range, Diagnostics) {
-  EXPECT_EQ(error_of("0:10:0"), "--rates: range \"0:10:0\": step must not be 0");
-  EXPECT_EQ(error_of("0:10:-1"), "--rates: range \"0:10:-1\": step -1 goes away from the stop");
-  EXPECT_EQ(error_of("0:ten"), "--rates: range \"0:ten\": \"ten\" is not a number");
-  EXPECT_EQ(error_of(""), "--rates: range \"\": \"\" is not a number");
-  EXPECT_EQ(error_of("1,,2"), "--rates: range \"\": \"\" is not a number");
-  EXPECT_EQ(error_of("0:1/1"),
+  EXPECT_EQ(range_error("0:10:0"), "--rates: range \"0:10:0\": step must not be 0");
+  EXPECT_EQ(range_error("0:10:-1"), "--rates: range \"0:10:-1\": step -1 goes away from the stop");
+  EXPECT_EQ(range_error("0:ten"), "--rates: range \"0:ten\": \"ten\" is not a number");
+  EXPECT_EQ(range_error(""), "--rates: range \"\": \"\" is not a number");
+  EXPECT_EQ(range_error("1,,2"), "--rates: range \"\": \"\" is not a number");
+  EXPECT_EQ(range_error("0:1/1"),
             "--rates: range \"0:1/1\": count must be a whole number from 2 to 100000");
-  EXPECT_EQ(error_of("0:1/2.5"),
+  EXPECT_EQ(range_error("0:1/2.5"),
             "--rates: range \"0:1/2.5\": count must be a whole number from 2 to 100000");
-  EXPECT_EQ(error_of("0:1:0.5/2"),
+  EXPECT_EQ(range_error("0:1:0.5/2"),
             "--rates: range \"0:1:0.5/2\": use either :step or /count, not both");
-  EXPECT_EQ(error_of("0:1e9:1"), "--rates: range \"0:1e9:1\": more than 100000 values");
-  EXPECT_EQ(error_of("0:1:2:3"), "--rates: range \"0:1:2:3\": \"2:3\" is not a number");
-  EXPECT_EQ(error_of("inf"), "--rates: range \"inf\": \"inf\" is not a number");
+  EXPECT_EQ(range_error("0:1e9:1"), "--rates: range \"0:1e9:1\": more than 100000 values");
+  EXPECT_EQ(range_error("0:1:2:3"), "--rates: range \"0:1:2:3\": \"2:3\" is not a number");
+  EXPECT_EQ(range_error("inf"), "--rates: range \"inf\": \"inf\" is not a number");
 }
 
 }  // namespace

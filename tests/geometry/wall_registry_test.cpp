@@ -13,8 +13,8 @@ namespace {
 using namespace rbcsim::geometry;
 using nlohmann::json;
 
-std::string error_of(const std::string& name, const json& parameters,
-                     const MeshLoader& load_mesh = {}) {
+std::string wall_shape_error(const std::string& name, const json& parameters,
+                             const MeshLoader& load_mesh = {}) {
   try {
     make_wall_shape(name, parameters, "capillary.wall", load_mesh);
   } catch (const rbcsim::InputError& error) {
@@ -70,26 +70,27 @@ TEST(WallRegistry, PresetsWithAndWithoutOverrides) {
 }
 
 TEST(WallRegistry, ErrorsNameTheJsonPath) {
-  EXPECT_EQ(error_of("paper-validation", {{"throat_diamter_um", 6.0}}),
+  EXPECT_EQ(wall_shape_error("paper-validation", {{"throat_diamter_um", 6.0}}),
             "capillary.wall.throat_diamter_um: unknown parameter of this wall shape");
-  EXPECT_EQ(error_of("capillary", {{"length_um", 30.0}, {"inlet_diameter_um", 10.0}}),
+  EXPECT_EQ(wall_shape_error("capillary", {{"length_um", 30.0}, {"inlet_diameter_um", 10.0}}),
             "capillary.wall.throat_diameter_um: missing (a number is required)");
-  EXPECT_EQ(error_of("tube", {{"diameter_um", "wide"}, {"length_um", 3.0}}),
+  EXPECT_EQ(wall_shape_error("tube", {{"diameter_um", "wide"}, {"length_um", 3.0}}),
             "capillary.wall.diameter_um: expected a number, got string");
-  EXPECT_EQ(error_of("paper-validation", json::array()),
+  EXPECT_EQ(wall_shape_error("paper-validation", json::array()),
             "capillary.wall: expected an object of shape parameters, got array");
-  EXPECT_NE(error_of("paper-validation", {{"throat_diameter_um", 10.2}})
+  EXPECT_NE(wall_shape_error("paper-validation", {{"throat_diameter_um", 10.2}})
                 .find("capillary.wall.throat_diameter_um: must be smaller than inlet_diameter_um"),
             std::string::npos);
-  EXPECT_NE(error_of("tube", {{"diameter_um", 4.0}, {"length_um", -1.0}})
+  EXPECT_NE(wall_shape_error("tube", {{"diameter_um", 4.0}, {"length_um", -1.0}})
                 .find("capillary.wall.length_um: must be a positive length"),
             std::string::npos);
-  EXPECT_NE(error_of("paper-validation", {{"profile", "step"}})
+  EXPECT_NE(wall_shape_error("paper-validation", {{"profile", "step"}})
                 .find("capillary.wall.profile: unknown constriction profile \"step\" (known: "
                       "cosine, linear)"),
             std::string::npos);
-  EXPECT_NE(error_of("pipe", json::object()).find("capillary.wall: unknown wall shape \"pipe\""),
-            std::string::npos);
+  EXPECT_NE(
+      wall_shape_error("pipe", json::object()).find("capillary.wall: unknown wall shape \"pipe\""),
+      std::string::npos);
 }
 
 TEST(WallRegistry, StlShapeReadsItsSurfaceThroughTheLoader) {
@@ -106,11 +107,11 @@ TEST(WallRegistry, StlShapeReadsItsSurfaceThroughTheLoader) {
   EXPECT_TRUE(bounds.open_axes[0]);
   EXPECT_FALSE(bounds.open_axes[1] || bounds.open_axes[2]);
 
-  EXPECT_EQ(error_of("stl", {{"file", "block.stl"}, {"open_axes", {"w"}}}, load_box),
+  EXPECT_EQ(wall_shape_error("stl", {{"file", "block.stl"}, {"open_axes", {"w"}}}, load_box),
             "capillary.wall.open_axes: unknown axis \"w\" (x, y or z)");
-  EXPECT_EQ(error_of("stl", {{"file", "block.stl"}}),
+  EXPECT_EQ(wall_shape_error("stl", {{"file", "block.stl"}}),
             "capillary.wall.file: this command cannot read wall surface files");
-  EXPECT_EQ(error_of("stl", json::object(), load_box),
+  EXPECT_EQ(wall_shape_error("stl", json::object(), load_box),
             "capillary.wall.file: missing (a string is required)");
 }
 

@@ -22,7 +22,7 @@ namespace {
 
 using testing::relative_l2_error_x;
 
-constexpr double kPeakVelocity = 0.01;
+constexpr double kWallFlowPeakVelocity = 0.01;
 
 FluidParameters bouzidi_trt(double tau) {
   FluidParameters parameters;
@@ -156,7 +156,7 @@ PlaneResult plane_poiseuille(int width, double bottom, double top, const std::st
   const double top_y = width + top;
   const double gap = top_y - bottom_y;
   const double viscosity = (tau - 0.5) / 3.0;
-  const double force = 8.0 * viscosity * kPeakVelocity / (gap * gap);
+  const double force = 8.0 * viscosity * kWallFlowPeakVelocity / (gap * gap);
   parameters.body_force = {force, 0.0, 0.0};
   FluidSolver solver(LatticeGrid(1, width + 2, 1), parameters);
   add_plane_walls(solver, bottom, top);
@@ -266,7 +266,7 @@ class PipeFlow {
 // R^2 / (5.78 nu) steps (415 at D = 40, tau = 1), so the run ends within ~5e-6 of steady, far
 // below the errors measured (>= 3e-4).
 double pipe_poiseuille_error(const PipeCase& pipe, double tau) {
-  PipeFlow flow(pipe, "bouzidi", tau, kPeakVelocity);
+  PipeFlow flow(pipe, "bouzidi", tau, kWallFlowPeakVelocity);
   flow.start_at_exact_profile();
   const auto steady = flow.solver().run_to_steady_state({2e-6, 200, 100000});
   EXPECT_TRUE(steady.converged) << steady.relative_velocity_change;
@@ -325,14 +325,14 @@ TEST(CurvedWalls, MassDriftIsSmallAndQuadraticInTheVelocity) {
     flow.solver().advance(steps);
     return (flow.solver().total_mass() - initial_mass) / initial_mass;
   };
-  const double slow = relative_drift("bouzidi", kPeakVelocity);
-  const double fast = relative_drift("bouzidi", 2.0 * kPeakVelocity);
+  const double slow = relative_drift("bouzidi", kWallFlowPeakVelocity);
+  const double fast = relative_drift("bouzidi", 2.0 * kWallFlowPeakVelocity);
   std::printf("pipe mass drift per step, bouzidi: %.2e at u_max %.2f, %.2e at %.2f\n", slow / steps,
-              kPeakVelocity, fast / steps, 2.0 * kPeakVelocity);
+              kWallFlowPeakVelocity, fast / steps, 2.0 * kWallFlowPeakVelocity);
   EXPECT_LT(std::abs(slow) / steps, 1e-8);
   // Quadratic: the next terms are O(u^4), 4e-4 relative at u_max = 0.02.
   EXPECT_NEAR(fast / slow, 4.0, 0.02);
-  EXPECT_LT(std::abs(relative_drift("halfway", kPeakVelocity)), 1e-12);
+  EXPECT_LT(std::abs(relative_drift("halfway", kWallFlowPeakVelocity)), 1e-12);
 }
 
 }  // namespace

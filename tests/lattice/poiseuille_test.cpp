@@ -13,7 +13,7 @@ namespace {
 using testing::add_channel_walls;
 using testing::relative_l2_error_x;
 
-constexpr double kPeakVelocity = 0.01;
+constexpr double kChannelPeakVelocity = 0.01;
 
 // Converged to well below the discretisation errors measured here (1e-4 and less): the change
 // per 200 steps is about a fifth of the remaining distance to steady state at the largest size.
@@ -25,7 +25,7 @@ double plane_poiseuille_error(int width, const std::string& collision, double ta
   parameters.collision = collision;
   parameters.collision_parameters.tau = tau;
   const double viscosity = (tau - 0.5) / 3.0;
-  const double force = 8.0 * viscosity * kPeakVelocity / (width * width);
+  const double force = 8.0 * viscosity * kChannelPeakVelocity / (width * width);
   parameters.body_force = {force, 0.0, 0.0};
   FluidSolver solver(LatticeGrid(4, width + 2, 1), parameters);
   add_channel_walls(solver);
@@ -63,7 +63,7 @@ double pipe_poiseuille_error(int diameter) {
   FluidParameters parameters;
   const double viscosity = (parameters.collision_parameters.tau - 0.5) / 3.0;
   const double radius = 0.5 * diameter;
-  const double force = 4.0 * viscosity * kPeakVelocity / (radius * radius);
+  const double force = 4.0 * viscosity * kChannelPeakVelocity / (radius * radius);
   parameters.body_force = {force, 0.0, 0.0};
   const int width = diameter + 2;
   FluidSolver solver(LatticeGrid(1, width, width), parameters);  // x-invariant: one node long

@@ -82,8 +82,8 @@ MembraneParameters parameters_for(unsigned mask, const std::string& distribution
   return parameters;
 }
 
-MembraneForces evaluate(const MembraneModel& model, const std::vector<Vec3>& positions_um,
-                        ForceDetail detail = ForceDetail::per_term) {
+MembraneForces compute_forces(const MembraneModel& model, const std::vector<Vec3>& positions_um,
+                              ForceDetail detail = ForceDetail::per_term) {
   auto workspace = model.make_workspace();
   auto forces = model.make_forces();
   model.compute(positions_um, workspace, forces, detail);
@@ -122,7 +122,7 @@ struct Scales {
 
 Scales scales_at(const shapes::TriangleMesh& mesh, const std::string& distribution,
                  const std::vector<Vec3>& positions_um) {
-  const auto forces = evaluate(
+  const auto forces = compute_forces(
       MembraneModel(mesh, parameters_for(kAllTerms, distribution, "reference")), positions_um);
   Scales scales;
   for (const auto& term : forces.terms) {
@@ -165,9 +165,9 @@ void expect_equivalent(const MembraneForces& expected, const MembraneForces& act
   EXPECT_EQ(actual.capped_vertex_count, expected.capped_vertex_count) << where;
 }
 
-using Case = std::tuple<std::size_t, std::string>;  // shape, distribution
+using ShapeAndDistribution = std::tuple<std::size_t, std::string>;  // shape, distribution
 
-class KernelEquivalence : public ::testing::TestWithParam<Case> {};
+class KernelEquivalence : public ::testing::TestWithParam<ShapeAndDistribution> {};
 
 TEST_P(KernelEquivalence, EveryTermSubsetAgreesWithTheReference) {
   const auto& [shape_index, distribution] = GetParam();
@@ -186,14 +186,15 @@ TEST_P(KernelEquivalence, EveryTermSubsetAgreesWithTheReference) {
     const MembraneModel reference(mesh, parameters_for(mask, distribution, "reference"));
     const MembraneModel optimised(mesh, parameters_for(mask, distribution, "optimised"));
     for (std::size_t d = 0; d < deformations.size(); ++d) {
-      expect_equivalent(evaluate(reference, deformations[d]), evaluate(optimised, deformations[d]),
-                        scales[d],
+      expect_equivalent(compute_forces(reference, deformations[d]),
+                        compute_forces(optimised, deformations[d]), scales[d],
                         "term mask " + std::to_string(mask) + ", deformation " + std::to_string(d));
     }
   }
 }
 
-std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+std::string shape_and_distribution_name(
+    const ::testing::TestParamInfo<ShapeAndDistribution>& info) {
   return equivalence_shapes()[std::get<0>(info.param)].shape.name + "_" + std::get<1>(info.param);
 }
 
@@ -201,7 +202,7 @@ INSTANTIATE_TEST_SUITE_P(
     AllShapes, KernelEquivalence,
     ::testing::Combine(::testing::Range<std::size_t>(0, equivalence_shapes().size()),
                        ::testing::Values("paper", "gradient")),
-    case_name);
+    shape_and_distribution_name);
 
 // The force cap acts on the same totals: the same vertices are clamped, to the same forces.
 TEST(KernelEquivalence, TheForceCapClampsTheSameVertices) {
@@ -209,9 +210,9 @@ TEST(KernelEquivalence, TheForceCapClampsTheSameVertices) {
   const auto positions = large_deformation(mesh, 5);
   auto parameters = parameters_for(kAllTerms, "gradient", "reference");
   parameters.vertex_force_cap_pN = 0.05;
-  const auto expected = evaluate(MembraneModel(mesh, parameters), positions);
+  const auto expected = compute_forces(MembraneModel(mesh, parameters), positions);
   parameters.kernel = "optimised";
-  const auto actual = evaluate(MembraneModel(mesh, parameters), positions);
+  const auto actual = compute_forces(MembraneModel(mesh, parameters), positions);
   EXPECT_GT(expected.capped_vertex_count, 0u);
   EXPECT_EQ(actual.capped_vertex_count, expected.capped_vertex_count);
   EXPECT_LE(max_difference(expected.total_pN, actual.total_pN),
@@ -275,7 +276,7 @@ TEST(KernelEquivalence, LimitErrorsNameTheSameTermAndElement) {
       const MembraneModel model(mesh, reference,
                                 parameters_for(kAllTerms, "gradient", kernel.name));
       try {
-        evaluate(model, mesh.positions_um, ForceDetail::totals);
+        compute_forces(model, mesh.positions_um, ForceDetail::totals);
         ADD_FAILURE() << kernel.name << ": no error for " << violation.expected_text;
       } catch (const rbcsim::RuntimeFailure& error) {
         messages.emplace_back(error.what());

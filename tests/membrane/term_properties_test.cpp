@@ -44,7 +44,8 @@ struct Evaluation {
   double max_abs_deviation;
 };
 
-Evaluation evaluate(const MembraneModel& model, const std::vector<Vec3>& positions_um) {
+Evaluation evaluate_energy_and_forces(const MembraneModel& model,
+                                      const std::vector<Vec3>& positions_um) {
   auto workspace = model.make_workspace();
   auto forces = model.make_forces();
   model.compute(positions_um, workspace, forces);
@@ -114,9 +115,9 @@ double max_force_pN(const std::vector<Vec3>& forces_pN) {
   return largest;
 }
 
-using Case = std::tuple<std::size_t, std::string, std::string>;  // shape, term, distribution
+using TermCase = std::tuple<std::size_t, std::string, std::string>;  // shape, term, distribution
 
-class TermProperties : public ::testing::TestWithParam<Case> {
+class TermProperties : public ::testing::TestWithParam<TermCase> {
  protected:
   const shapes::NamedShape& shape() const { return test_shapes()[std::get<0>(GetParam())]; }
   const std::string& term() const { return std::get<1>(GetParam()); }
@@ -136,7 +137,7 @@ TEST_P(TermProperties, VanishesOnTheReferenceShapeAfterARigidMotion) {
       Eigen::AngleAxisd(0.7, Vec3(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
   std::vector<Vec3> moved = shape().mesh.positions_um;
   for (auto& p : moved) p = rotation * p + Vec3(1.5, -2.0, 0.5);
-  const auto evaluation = evaluate(membrane, moved);
+  const auto evaluation = evaluate_energy_and_forces(membrane, moved);
   // Round-off of d (~1e-15) times force scales of at most ~50 pN.
   EXPECT_LT(max_force_pN(evaluation.forces_pN), 1e-9);
   EXPECT_LT(evaluation.max_abs_deviation, 1e-12);
@@ -145,7 +146,7 @@ TEST_P(TermProperties, VanishesOnTheReferenceShapeAfterARigidMotion) {
 
 TEST_P(TermProperties, ConservesMomentumAndAngularMomentum) {
   const auto positions = deformed();
-  const auto evaluation = evaluate(model(), positions);
+  const auto evaluation = evaluate_energy_and_forces(model(), positions);
   // Round-off of sums over ~10^3 vertices of forces of a few element forces each.
   const double force_scale_pN =
       static_cast<double>(positions.size()) *
@@ -172,7 +173,7 @@ TEST_P(TermProperties, IsRestoring) {
   }
   const auto membrane = model();
   const auto positions = deformed();
-  const auto before = evaluate(membrane, positions);
+  const auto before = evaluate_energy_and_forces(membrane, positions);
   const bool cell_term =
       term() == "volume" || term() == "area_difference" || term() == "total_curvature";
   const double before_measure = cell_term ? before.max_abs_deviation : before.energy_pN_um;
@@ -183,14 +184,14 @@ TEST_P(TermProperties, IsRestoring) {
     auto stepped = positions;
     for (std::size_t i = 0; i < stepped.size(); ++i)
       stepped[i] += step_um_per_pN * before.forces_pN[i];
-    const auto after = evaluate(membrane, stepped);
+    const auto after = evaluate_energy_and_forces(membrane, stepped);
     after_measure = cell_term ? after.max_abs_deviation : after.energy_pN_um;
     step_um_per_pN /= 2;
   }
   EXPECT_LT(after_measure, before_measure);
 }
 
-std::string case_name(const ::testing::TestParamInfo<Case>& info) {
+std::string term_case_name(const ::testing::TestParamInfo<TermCase>& info) {
   return test_shapes()[std::get<0>(info.param)].name + "_" + std::get<1>(info.param) + "_" +
          std::get<2>(info.param);
 }
@@ -202,7 +203,7 @@ auto cases(const std::vector<std::string>& distributions) {
                             ::testing::ValuesIn(distributions));
 }
 
-INSTANTIATE_TEST_SUITE_P(AllTerms, TermProperties, cases({"paper", "gradient"}), case_name);
+INSTANTIATE_TEST_SUITE_P(AllTerms, TermProperties, cases({"paper", "gradient"}), term_case_name);
 
 // `gradient` forces (and the central link/area/volume forces) are minus the gradient of the
 // term's energy: compared with a central difference on a sample of vertices.
@@ -213,7 +214,7 @@ class GradientForm : public TermProperties {};
 TEST_P(GradientForm, MatchesFiniteDifferenceOfTheEnergy) {
   const auto membrane = model();
   const auto positions = deformed();
-  const auto analytic = evaluate(membrane, positions);
+  const auto analytic = evaluate_energy_and_forces(membrane, positions);
   const double step_um = 1e-5 * shapes::mean_edge_length_um(shape().mesh);
   const std::size_t sample_stride = positions.size() / 25;
   double error_squared = 0.0;
@@ -222,9 +223,9 @@ TEST_P(GradientForm, MatchesFiniteDifferenceOfTheEnergy) {
   for (std::size_t v = 0; v < positions.size(); v += sample_stride) {
     for (int axis = 0; axis < 3; ++axis) {
       probe[v][axis] = positions[v][axis] + step_um;
-      const double energy_plus = evaluate(membrane, probe).energy_pN_um;
+      const double energy_plus = evaluate_energy_and_forces(membrane, probe).energy_pN_um;
       probe[v][axis] = positions[v][axis] - step_um;
-      const double energy_minus = evaluate(membrane, probe).energy_pN_um;
+      const double energy_minus = evaluate_energy_and_forces(membrane, probe).energy_pN_um;
       probe[v][axis] = positions[v][axis];
       const double finite_difference_pN = -(energy_plus - energy_minus) / (2.0 * step_um);
       error_squared += std::pow(analytic.forces_pN[v][axis] - finite_difference_pN, 2);
@@ -235,7 +236,7 @@ TEST_P(GradientForm, MatchesFiniteDifferenceOfTheEnergy) {
   EXPECT_LT(std::sqrt(error_squared / norm_squared), 1e-5);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllTerms, GradientForm, cases({"gradient"}), case_name);
+INSTANTIATE_TEST_SUITE_P(AllTerms, GradientForm, cases({"gradient"}), term_case_name);
 
 // The residual torque of the `paper` angle terms (DESIGN.md: measured and reported, not zero).
 TEST(PaperDistribution, ResidualTorqueIsMeasured) {
@@ -246,9 +247,10 @@ TEST(PaperDistribution, ResidualTorqueIsMeasured) {
     const auto positions =
         shapes::small_deformation(shape.mesh, 1000u + static_cast<std::uint32_t>(s));
     for (const std::string term : {"bend", "area_difference", "total_curvature"}) {
-      const auto paper = evaluate(MembraneModel(shape.mesh, single_term(term, "paper")), positions);
-      const auto gradient =
-          evaluate(MembraneModel(shape.mesh, single_term(term, "gradient")), positions);
+      const auto paper = evaluate_energy_and_forces(
+          MembraneModel(shape.mesh, single_term(term, "paper")), positions);
+      const auto gradient = evaluate_energy_and_forces(
+          MembraneModel(shape.mesh, single_term(term, "gradient")), positions);
       const auto paper_balance = balance(positions, paper.forces_pN);
       const auto gradient_balance = balance(positions, gradient.forces_pN);
       std::printf("%-12s %-16s %14.3e %14.3e %16.3e\n", shape.name.c_str(), term.c_str(),

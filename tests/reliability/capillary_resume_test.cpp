@@ -1,8 +1,8 @@
 // Checkpoint and resume of the capillary experiment (DESIGN.md §6): a run interrupted after
-// kInterruptStep steps, then resumed from its checkpoint, ends with the straight run's samples,
-// deformation record and step counts bit for bit (although the interrupted run's observers saw a
-// state between two sample intervals), also through the binary
-// with --checkpoint-every and --resume.
+// kCapillaryInterruptStep steps, then resumed from its checkpoint, ends with the straight run's
+// samples, deformation record and step counts bit for bit (although the interrupted run's observers
+// saw a state between two sample intervals), also through the binary with --checkpoint-every and
+// --resume.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -33,8 +33,9 @@ constexpr std::size_t kTotalSteps = 30;
 constexpr std::size_t kSampleSteps = 4;
 // Odd, so the optimised fluid kernel holds its populations post-collision in the swapped (AA)
 // layout there, and not a multiple of kSampleSteps.
-constexpr std::size_t kInterruptStep = 13;
+constexpr std::size_t kCapillaryInterruptStep = 13;
 
+using rbcsim::testing::checkpoint_only_when_interrupted;
 using rbcsim::testing::InterruptScope;
 
 // The coarse capillary of capillary_case_test.cpp (dx = 1 um, the 162-vertex cell).
@@ -67,10 +68,6 @@ class CoarseCapillary {
   setup::CellMesh cell_;
 };
 
-void set_policy(coupling::CoupledSimulation& simulation, const std::filesystem::path& file) {
-  simulation.set_checkpoint_policy({file, "capillary resume test", 0, 0.0});
-}
-
 void expect_same(const Vec3& resumed, const Vec3& straight) {
   for (int axis = 0; axis < 3; ++axis) EXPECT_EQ(resumed[axis], straight[axis]);
 }
@@ -92,21 +89,22 @@ TEST(CapillaryResume, InterruptedThenResumedRunEndsAsAStraightRun) {
   const ScratchDirectory scratch;
   const auto file = scratch.path() / coupling::kCheckpointFileName;
   const auto interrupted = capillary.run([&file](coupling::CoupledSimulation& simulation) {
-    set_policy(simulation, file);
+    checkpoint_only_when_interrupted(simulation, file, "capillary resume test");
     simulation.add_observer({"interrupt", 1, [](const coupling::CoupledSimulation& s) {
-                               if (s.time_step() == kInterruptStep) request_interrupt(SIGINT);
+                               if (s.time_step() == kCapillaryInterruptStep)
+                                 request_interrupt(SIGINT);
                              }});
   });
   ASSERT_TRUE(interrupted.interrupted) << interrupted.failure;
-  EXPECT_EQ(interrupted.steps, kInterruptStep);
+  EXPECT_EQ(interrupted.steps, kCapillaryInterruptStep);
   // The results so far include the state reached, between two sample intervals.
-  ASSERT_EQ(interrupted.samples.size(), kInterruptStep / kSampleSteps + 2);
+  ASSERT_EQ(interrupted.samples.size(), kCapillaryInterruptStep / kSampleSteps + 2);
   EXPECT_EQ(interrupted.samples.back().time_s, interrupted.time_s);
   ASSERT_TRUE(std::filesystem::exists(file));
   clear_interrupt();
 
   const auto resumed = capillary.run([&file](coupling::CoupledSimulation& simulation) {
-    set_policy(simulation, file);
+    checkpoint_only_when_interrupted(simulation, file, "capillary resume test");
     simulation.resume_from(file);
   });
   ASSERT_FALSE(resumed.interrupted);

@@ -29,8 +29,10 @@ using rbcsim::testing::ScratchDirectory;
 
 // Rate 1 (500 1/s) takes about 230 steps. An odd step: the optimised fluid kernel then holds its
 // populations post-collision in the swapped (AA) layout, which the checkpoint restores as is.
-constexpr std::size_t kInterruptStep = 181;  // past half the run: tank treading is measured there
+constexpr std::size_t kShearInterruptStep =
+    181;  // past half the run: tank treading is measured there
 
+using rbcsim::testing::checkpoint_only_when_interrupted;
 using rbcsim::testing::InterruptScope;
 
 const mesh::TriangleMesh& coarse_cell() {
@@ -62,10 +64,6 @@ std::filesystem::path checkpoint_of(const ScratchDirectory& scratch, std::size_t
   return scratch.path() / (shear_rate_directory(rate_index) + ".bin");
 }
 
-void set_policy(coupling::CoupledSimulation& simulation, const std::filesystem::path& file) {
-  simulation.set_checkpoint_policy({file, "shear resume test", 0, 0.0});
-}
-
 void expect_same(const ShearPoint& resumed, const ShearPoint& straight) {
   EXPECT_EQ(resumed.failure, straight.failure);
   EXPECT_EQ(resumed.steps, straight.steps);
@@ -87,16 +85,16 @@ TEST(ShearResume, InterruptedSweepResumesToTheStraightSweep) {
   const auto straight = coarse.sweep({});
   ASSERT_EQ(straight.size(), 2u);
   ASSERT_EQ(straight[1].failure, "");
-  ASSERT_GT(straight[1].steps, kInterruptStep);
+  ASSERT_GT(straight[1].steps, kShearInterruptStep);
   ASSERT_NE(straight[1].tank_treading_hz, 0.0);
 
-  // Rate 0 ends; rate 1 is interrupted at kInterruptStep and checkpoints there.
+  // Rate 0 ends; rate 1 is interrupted at kShearInterruptStep and checkpoints there.
   const ScratchDirectory scratch;
   ShearHooks first;
   first.configure = [&scratch](std::size_t rate, coupling::CoupledSimulation& simulation) {
-    set_policy(simulation, checkpoint_of(scratch, rate));
+    checkpoint_only_when_interrupted(simulation, checkpoint_of(scratch, rate), "shear resume test");
     simulation.add_observer({"interrupt", 1, [rate](const coupling::CoupledSimulation& s) {
-                               if (rate == 1 && s.time_step() == kInterruptStep) {
+                               if (rate == 1 && s.time_step() == kShearInterruptStep) {
                                  request_interrupt(SIGINT);
                                }
                              }});
@@ -104,7 +102,7 @@ TEST(ShearResume, InterruptedSweepResumesToTheStraightSweep) {
   const auto interrupted = coarse.sweep(first);
   EXPECT_FALSE(interrupted[0].interrupted);
   ASSERT_TRUE(interrupted[1].interrupted) << interrupted[1].failure;
-  EXPECT_EQ(interrupted[1].steps, kInterruptStep);
+  EXPECT_EQ(interrupted[1].steps, kShearInterruptStep);
   ASSERT_TRUE(std::filesystem::exists(checkpoint_of(scratch, 1)));
 
   // Still interrupted: the rates not started are reported so, not run.
@@ -117,7 +115,7 @@ TEST(ShearResume, InterruptedSweepResumesToTheStraightSweep) {
   second.completed = {interrupted[0], std::nullopt};
   second.configure = [&scratch](std::size_t rate, coupling::CoupledSimulation& simulation) {
     ASSERT_EQ(rate, 1u) << "a completed rate ran again";
-    set_policy(simulation, checkpoint_of(scratch, rate));
+    checkpoint_only_when_interrupted(simulation, checkpoint_of(scratch, rate), "shear resume test");
     simulation.resume_from(checkpoint_of(scratch, rate));
   };
   const auto resumed = coarse.sweep(second);

@@ -35,6 +35,7 @@ namespace {
 
 using rbcsim::testing::ScratchDirectory;
 
+using rbcsim::testing::checkpoint_only_when_interrupted;
 using rbcsim::testing::InterruptScope;
 
 struct CoarseStretch {
@@ -70,10 +71,6 @@ Written written(StretchRun run) {
   return out;
 }
 
-void set_policy(coupling::CoupledSimulation& simulation, const std::filesystem::path& file) {
-  simulation.set_checkpoint_policy({file, "stretch resume test", 0, 0.0});
-}
-
 TEST(StretchResume, InterruptedCurveResumesToTheStraightCurve) {
   const InterruptScope scope;
   const ThreadCountScope one_thread(1);
@@ -92,7 +89,7 @@ TEST(StretchResume, InterruptedCurveResumesToTheStraightCurve) {
   const ScratchDirectory scratch;
   const auto checkpoint = scratch.path() / coupling::kCheckpointFileName;
   const auto interrupted = coarse.run([&](coupling::CoupledSimulation& simulation) {
-    set_policy(simulation, checkpoint);
+    checkpoint_only_when_interrupted(simulation, checkpoint, "stretch resume test");
     simulation.add_observer(
         {"interrupt", 1, [interrupt_step](const coupling::CoupledSimulation& s) {
            if (s.time_step() == interrupt_step) request_interrupt(SIGINT);
@@ -105,7 +102,7 @@ TEST(StretchResume, InterruptedCurveResumesToTheStraightCurve) {
   clear_interrupt();
 
   const auto resumed = coarse.run([&](coupling::CoupledSimulation& simulation) {
-    set_policy(simulation, checkpoint);
+    checkpoint_only_when_interrupted(simulation, checkpoint, "stretch resume test");
     simulation.resume_from(checkpoint);
   });
   ASSERT_TRUE(resumed.ok()) << resumed.failure;

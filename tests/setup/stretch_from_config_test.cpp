@@ -9,7 +9,7 @@ namespace {
 
 using rbcsim::setup::stretch_forces_from;
 
-std::string error_of(const std::string& text) {
+std::string forces_error(const std::string& text) {
   try {
     stretch_forces_from(text, "--forces");
   } catch (const rbcsim::InputError& error) {
@@ -48,8 +48,8 @@ TEST(StretchFromConfig, OverridesReachTheSettings) {
 TEST(StretchFromConfig, ForcesTextIsARangeOrTheReference) {
   EXPECT_EQ(stretch_forces_from("0:200", "x").size(), 9u);  // every 25 pN
   EXPECT_EQ(stretch_forces_from("10,5", "x"), (std::vector<double>{10, 5}));
-  EXPECT_EQ(error_of("-5:10:5"), "--forces: forces must be >= 0 pN (the tweezers pull)");
-  EXPECT_EQ(error_of("abc"), "--forces: range \"abc\": \"abc\" is not a number");
+  EXPECT_EQ(forces_error("-5:10:5"), "--forces: forces must be >= 0 pN (the tweezers pull)");
+  EXPECT_EQ(forces_error("abc"), "--forces: range \"abc\": \"abc\" is not a number");
   EXPECT_THROW(rbcsim::config::resolve_config({.assignments = {"stretch.mode=molten"}}),
                rbcsim::InputError);
 }

@@ -1,7 +1,12 @@
 // For tests that raise the interrupt flag (Ctrl-C) in-process.
 #pragma once
 
+#include <filesystem>
+#include <string>
+#include <utility>
+
 #include "common/interrupt.hpp"
+#include "coupling/coupled_simulation.hpp"
 
 namespace rbcsim::testing {
 
@@ -10,5 +15,13 @@ struct InterruptScope {
   InterruptScope() { rbcsim::clear_interrupt(); }
   ~InterruptScope() { rbcsim::clear_interrupt(); }
 };
+
+// The simulation writes `file` only when interrupted (never by step count or wall time), so a
+// test knows exactly which step the checkpoint holds.
+inline void checkpoint_only_when_interrupted(coupling::CoupledSimulation& simulation,
+                                             const std::filesystem::path& file,
+                                             std::string config_fingerprint) {
+  simulation.set_checkpoint_policy({file, std::move(config_fingerprint), 0, 0.0});
+}
 
 }  // namespace rbcsim::testing

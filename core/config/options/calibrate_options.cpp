@@ -5,10 +5,10 @@ namespace rbcsim::config {
 namespace {
 
 // The defaults come from the case's settings struct: one source of truth.
-const cases::CalibrationSettings kDefaults{};
+const cases::CalibrationSettings kCalibrateDefaults{};
 
 void add_target_options(OptionTable& table) {
-  const auto& targets = kDefaults.targets;
+  const auto& targets = kCalibrateDefaults.targets;
   table.add_choice("calibrate.target.moduli", cases::target_moduli_names(), targets.moduli,
                    "In-plane targets of the link_area fit: shear and area-compression moduli, "
                    "or Young's modulus and Poisson ratio.");
@@ -47,26 +47,27 @@ void add_target_options(OptionTable& table) {
 }  // namespace
 
 void add_calibrate_options(OptionTable& table) {
-  table.add_choice_list("calibrate.fits", cases::calibration_fit_names(), kDefaults.fits,
+  table.add_choice_list("calibrate.fits", cases::calibration_fit_names(), kCalibrateDefaults.fits,
                         "Fits to run: link_area (k_link, k_area to the in-plane targets), bend "
                         "(k_bend to D), curvature_terms (k_area_difference, k_total_curvature to "
                         "the overall bending modulus).");
-  table.add_choice("calibrate.patch_edge", cases::patch_edge_rule_names(), kDefaults.patch_edge,
+  table.add_choice("calibrate.patch_edge", cases::patch_edge_rule_names(),
+                   kCalibrateDefaults.patch_edge,
                    "Rest edge of the patches: the cell mesh's mean edge (the k are "
                    "mesh-dependent) or membrane.force_length_scale_um (Table 2's L0).");
   table
-      .add_number("calibrate.strain", "", kDefaults.strain,
+      .add_number("calibrate.strain", "", kCalibrateDefaults.strain,
                   "Strain amplitude of the hexagonal patch tests (central differences).")
       .above(0.0)
       .at_most(0.05);
   table
-      .add_number("calibrate.angle_rad", "rad", kDefaults.angle_rad,
+      .add_number("calibrate.angle_rad", "rad", kCalibrateDefaults.angle_rad,
                   "Fold of the two-triangle patch and uniform dihedral perturbation of the cell.")
       .above(0.0)
       .at_most(0.05);
   table
       .add_number("calibrate.area_difference_per_total_curvature", "",
-                  kDefaults.area_difference_per_total_curvature,
+                  kCalibrateDefaults.area_difference_per_total_curvature,
                   "Ratio k_area_difference / k_total_curvature kept by the curvature_terms fit "
                   "(the paper's 300 / 100).")
       .above(0.0);

@@ -5,7 +5,7 @@ namespace rbcsim::config {
 namespace {
 
 // The defaults come from the case's settings struct: one source of truth.
-const cases::CapillarySettings kDefaults{};
+const cases::CapillarySettings kCapillaryDefaults{};
 
 void add_wall_options(OptionTable& table) {
   // The validation case by default: it is the paper's discocyte experiment (§3.3, Fig. 13), and
@@ -32,52 +32,55 @@ void add_wall_options(OptionTable& table) {
 
 void add_flow_options(OptionTable& table) {
   table
-      .add_number("capillary.inlet_velocity_m_per_s", "m/s", kDefaults.mean_inlet_velocity_m_per_s,
+      .add_number("capillary.inlet_velocity_m_per_s", "m/s",
+                  kCapillaryDefaults.mean_inlet_velocity_m_per_s,
                   "Mean velocity over the inlet (Poiseuille profile); 0: the velocity giving the "
                   "paper's Reynolds number for the geometry (0.0643 validation, 0.04 "
                   "three-morphology) with physics.plasma_kinematic_viscosity_m2_per_s.")
       .at_least(0.0);
   table
-      .add_number("capillary.fluid_tolerance", "", kDefaults.fluid_tolerance,
+      .add_number("capillary.fluid_tolerance", "", kCapillaryDefaults.fluid_tolerance,
                   "The fluid alone is steady when its largest velocity change per check interval "
                   "is below this fraction of its largest velocity.")
       .above(0.0);
   table
-      .add_integer("capillary.fluid_max_steps", "", static_cast<int>(kDefaults.fluid_max_steps),
+      .add_integer("capillary.fluid_max_steps", "",
+                   static_cast<int>(kCapillaryDefaults.fluid_max_steps),
                    "Steps allowed for the fluid alone to become steady; more fails the run.")
       .at_least(1);
 }
 
 void add_cell_options(OptionTable& table) {
-  table.add_choice("capillary.cell_axis", cases::cell_axis_names(), kDefaults.cell_axis,
+  table.add_choice("capillary.cell_axis", cases::cell_axis_names(), kCapillaryDefaults.cell_axis,
                    "Lab axis the cell mesh's z axis (a built-in shape's symmetry axis) is turned "
                    "onto; z: a discocyte's disc lies in the x-y plane (DI = 1 at release).");
   table
-      .add_number("capillary.release_gap_um", "um", kDefaults.release_gap_um,
+      .add_number("capillary.release_gap_um", "um", kCapillaryDefaults.release_gap_um,
                   "Gap between the inlet plane and the cell's upstream end at release.")
       .above(0.0);
   table
       .add_number("capillary.wall_repulsion_pN_per_um2", "pN/um^2",
-                  kDefaults.wall_repulsion_pN_per_um2,
+                  kCapillaryDefaults.wall_repulsion_pN_per_um2,
                   "Wall push on the membrane at contact, per membrane area (it stands in for the "
                   "lubrication film the lattice cannot resolve); 0: none. Built-in capillaries "
                   "only.")
       .at_least(0.0);
   table
-      .add_number("capillary.wall_repulsion_range_um", "um", kDefaults.wall_repulsion_range_um,
+      .add_number("capillary.wall_repulsion_range_um", "um",
+                  kCapillaryDefaults.wall_repulsion_range_um,
                   "Distance from the wall within which the repulsion acts.")
       .above(0.0);
   table
-      .add_number("capillary.pass_margin_um", "um", kDefaults.pass_margin_um,
+      .add_number("capillary.pass_margin_um", "um", kCapillaryDefaults.pass_margin_um,
                   "The cell has passed once its centroid is this far beyond the narrow section.")
       .above(0.0);
   table
-      .add_number("capillary.max_time_s", "s", kDefaults.max_time_s,
+      .add_number("capillary.max_time_s", "s", kCapillaryDefaults.max_time_s,
                   "Simulated time allowed after release; a cell that has not passed by then "
                   "fails the run.")
       .above(0.0);
   table
-      .add_number("capillary.sample_interval_s", "s", kDefaults.sample_interval_s,
+      .add_number("capillary.sample_interval_s", "s", kCapillaryDefaults.sample_interval_s,
                   "Time between rows of capillary_timeseries.csv.")
       .above(0.0);
 }

@@ -6,89 +6,90 @@ namespace rbcsim::config {
 namespace {
 
 // The defaults come from the membrane module's parameter struct: one source of truth.
-const membrane::MembraneParameters kDefaults{};
+const membrane::MembraneParameters kMembraneDefaults{};
 
 // Every force term has the form F = -(k kBT / length) d (1 + 1/(tau^2 - d^2)) (Eqs. 6-11):
 // k is its stiffness in kBT, tau the limit of its relative deviation d.
 void add_stiffnesses(OptionTable& table) {
   // Discocyte values of Table 2; share/config/<morphology>.json overrides them per morphology.
   table
-      .add_number("membrane.k_link_kBT", "kBT", kDefaults.k_link_kBT, "Link stiffness k_l (Eq. 6).")
+      .add_number("membrane.k_link_kBT", "kBT", kMembraneDefaults.k_link_kBT,
+                  "Link stiffness k_l (Eq. 6).")
       .at_least(0.0);
   table
-      .add_number("membrane.k_bend_kBT", "kBT", kDefaults.k_bend_kBT,
+      .add_number("membrane.k_bend_kBT", "kBT", kMembraneDefaults.k_bend_kBT,
                   "Bending stiffness k_b (Eq. 7).")
       .at_least(0.0);
   table
-      .add_number("membrane.k_area_kBT", "kBT", kDefaults.k_area_kBT,
+      .add_number("membrane.k_area_kBT", "kBT", kMembraneDefaults.k_area_kBT,
                   "Local area stiffness k_a (Eq. 8).")
       .at_least(0.0);
   table
-      .add_number("membrane.k_volume_kBT", "kBT", kDefaults.k_volume_kBT,
+      .add_number("membrane.k_volume_kBT", "kBT", kMembraneDefaults.k_volume_kBT,
                   "Volume stiffness k_v (Eq. 9).")
       .at_least(0.0);
   table
-      .add_number("membrane.k_area_difference_kBT", "kBT", kDefaults.k_area_difference_kBT,
+      .add_number("membrane.k_area_difference_kBT", "kBT", kMembraneDefaults.k_area_difference_kBT,
                   "Area-difference stiffness k_ad (Eq. 10).")
       .at_least(0.0);
   table
-      .add_number("membrane.k_total_curvature_kBT", "kBT", kDefaults.k_total_curvature_kBT,
+      .add_number("membrane.k_total_curvature_kBT", "kBT", kMembraneDefaults.k_total_curvature_kBT,
                   "Total-curvature stiffness k_c (Eq. 11).")
       .at_least(0.0);
 }
 
 void add_limits(OptionTable& table) {
   table
-      .add_number("membrane.tau_link", "", kDefaults.tau_link,
+      .add_number("membrane.tau_link", "", kMembraneDefaults.tau_link,
                   "Limit tau_l of the relative edge strain (Eq. 6).")
       .above(0.0);
   table
-      .add_number("membrane.tau_bend_rad", "rad", kDefaults.tau_bend_rad,
+      .add_number("membrane.tau_bend_rad", "rad", kMembraneDefaults.tau_bend_rad,
                   "Limit tau_b of the dihedral angle change (Eq. 7), pi/6.")
       .above(0.0);
   table
-      .add_number("membrane.tau_area", "", kDefaults.tau_area,
+      .add_number("membrane.tau_area", "", kMembraneDefaults.tau_area,
                   "Limit tau_a of the relative area change (Eq. 8).")
       .above(0.0);
   // Table 2 prints 0.01, but HemoCell stores tau squared and runs with tau_v = 0.1; 0.01 would
   // make a 1 % volume change infinitely stiff.
   table
-      .add_number("membrane.tau_volume", "", kDefaults.tau_volume,
+      .add_number("membrane.tau_volume", "", kMembraneDefaults.tau_volume,
                   "Limit tau_v of the relative volume change (Eq. 9); Table 2 prints 0.01, which "
                   "is HemoCell's stored tau_v^2: HemoCell runs with tau_v = 0.1.")
       .above(0.0);
   table
-      .add_number("membrane.tau_area_difference", "", kDefaults.tau_area_difference,
+      .add_number("membrane.tau_area_difference", "", kMembraneDefaults.tau_area_difference,
                   "Limit tau_ad of the relative area difference change (Eq. 10).")
       .above(0.0);
   table
-      .add_number("membrane.tau_total_curvature", "", kDefaults.tau_total_curvature,
+      .add_number("membrane.tau_total_curvature", "", kMembraneDefaults.tau_total_curvature,
                   "Limit tau_tc of the relative total curvature change (Eq. 11).")
       .above(0.0);
 }
 
 void add_scales_and_variants(OptionTable& table) {
   table
-      .add_number("membrane.persistence_length_um", "um", kDefaults.persistence_length_um,
+      .add_number("membrane.persistence_length_um", "um", kMembraneDefaults.persistence_length_um,
                   "Persistence length p, the length in the denominator of the link force (Eq. 6; "
                   "HemoCell's p = 7.5 nm).")
       .above(0.0);
   table
-      .add_number("membrane.force_length_scale_um", "um", kDefaults.force_length_scale_um,
+      .add_number("membrane.force_length_scale_um", "um", kMembraneDefaults.force_length_scale_um,
                   "L0 of Table 2, the length in the denominator of Eqs. 7-11.")
       .above(0.0);
-  table.add_choice_list("membrane.forces", membrane::all_force_term_names(), kDefaults.forces,
-                        "Force terms switched on.");
+  table.add_choice_list("membrane.forces", membrane::all_force_term_names(),
+                        kMembraneDefaults.forces, "Force terms switched on.");
   std::vector<std::string> kernels;
   for (const auto& kernel : membrane::membrane_kernel_table()) kernels.emplace_back(kernel.name);
-  table.add_choice("membrane.kernel", kernels, kDefaults.kernel,
+  table.add_choice("membrane.kernel", kernels, kMembraneDefaults.kernel,
                    "Force kernel: the fused optimised one, or the plain reference it is tested "
                    "against (same forces to round-off).");
-  table.add_choice("membrane.distribution", {"gradient", "paper"}, kDefaults.distribution,
+  table.add_choice("membrane.distribution", {"gradient", "paper"}, kMembraneDefaults.distribution,
                    "Distribution of the angle-based forces: exact energy gradient (conserves "
                    "angular momentum) or Eqs. 15-18 as printed.");
   table
-      .add_number("membrane.vertex_force_cap_pN", "pN", kDefaults.vertex_force_cap_pN,
+      .add_number("membrane.vertex_force_cap_pN", "pN", kMembraneDefaults.vertex_force_cap_pN,
                   "Per-vertex force cap: a safety net only, every trigger is reported.")
       .above(0.0);
 }

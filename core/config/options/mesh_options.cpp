@@ -6,10 +6,10 @@ namespace rbcsim::config {
 namespace {
 
 // Defaults come from the generators' parameter structs: one source of truth.
-const mesh::CellShapeParameters kDefaults{};
+const mesh::CellShapeParameters kMeshDefaults{};
 
 void add_discocyte_options(OptionTable& table) {
-  const auto& shape = kDefaults.discocyte;
+  const auto& shape = kMeshDefaults.discocyte;
   table.add_number("mesh.discocyte.radius_um", "um", shape.radius_um, "Evans-Fung radius R0.")
       .above(0.0);
   table.add_number("mesh.discocyte.c0", "", shape.c0, "Evans-Fung coefficient C0.");
@@ -18,7 +18,7 @@ void add_discocyte_options(OptionTable& table) {
 }
 
 void add_stomatocyte_options(OptionTable& table) {
-  const auto& shape = kDefaults.stomatocyte;
+  const auto& shape = kMeshDefaults.stomatocyte;
   table
       .add_number("mesh.stomatocyte.membrane_area_um2", "um^2", shape.membrane_area_um2,
                   "Membrane area (the discocyte's: area is conserved through the shape change).")
@@ -40,7 +40,7 @@ void add_stomatocyte_options(OptionTable& table) {
 }
 
 void add_echinocyte_options(OptionTable& table) {
-  const auto& shape = kDefaults.echinocyte;
+  const auto& shape = kMeshDefaults.echinocyte;
   table
       .add_number("mesh.echinocyte.membrane_area_um2", "um^2", shape.membrane_area_um2,
                   "Membrane area (the discocyte's: area is conserved through the shape change).")

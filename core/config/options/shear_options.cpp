@@ -5,20 +5,20 @@ namespace rbcsim::config {
 namespace {
 
 // The defaults come from the case's settings struct: one source of truth.
-const cases::ShearSettings kDefaults{};
+const cases::ShearSettings kShearDefaults{};
 
 void add_box_options(OptionTable& table) {
-  table.add_choice("shear.boundary", cases::shear_boundary_names(), kDefaults.boundary,
+  table.add_choice("shear.boundary", cases::shear_boundary_names(), kShearDefaults.boundary,
                    "Boundary along the velocity gradient: Lees-Edwards sliding periodic images "
                    "(the paper's set-up) or two moving bounce-back walls.");
   // 3 diameters: far enough from the walls (or the sliding images) not to confine the cell;
   // HemoCell's 10 um gap is known to confine it too much.
   table
-      .add_number("shear.gap_diameters", "", kDefaults.gap_diameters,
+      .add_number("shear.gap_diameters", "", kShearDefaults.gap_diameters,
                   "Box height (lees-edwards) or wall gap (walls), in cell diameters.")
       .above(1.0);
   table
-      .add_number("shear.width_diameters", "", kDefaults.width_diameters,
+      .add_number("shear.width_diameters", "", kShearDefaults.width_diameters,
                   "Periodic box length along the flow (x) and the vorticity (z), in cell "
                   "diameters.")
       .above(1.0);
@@ -26,28 +26,29 @@ void add_box_options(OptionTable& table) {
 
 void add_steady_options(OptionTable& table) {
   table
-      .add_number("shear.max_strain", "", kDefaults.max_strain,
+      .add_number("shear.max_strain", "", kShearDefaults.max_strain,
                   "Shear strain (rate x time) after which a rate that is not steady stops and is "
                   "reported steady: false.")
       .above(0.0);
   table
-      .add_number("shear.steady_tolerance_per_strain", "", kDefaults.steady_tolerance_per_strain,
+      .add_number("shear.steady_tolerance_per_strain", "",
+                  kShearDefaults.steady_tolerance_per_strain,
                   "Steady when the length and the breadth change by less than this fraction of "
                   "themselves per unit strain, over three checks in a row.")
       .above(0.0);
   table
-      .add_number("shear.check_interval_strain", "", kDefaults.check_interval_strain,
+      .add_number("shear.check_interval_strain", "", kShearDefaults.check_interval_strain,
                   "Strain between two steady-state checks.")
       .above(0.0);
 }
 
 void add_time_scale_options(OptionTable& table) {
-  table.add_boolean("shear.viscosity_scaling", kDefaults.viscosity_scaling,
+  table.add_boolean("shear.viscosity_scaling", kShearDefaults.viscosity_scaling,
                     "Simulate each rate faster with a proportionally lower viscosity (the same "
                     "capillary number, so the same steady shape) up to shear.max_reynolds_number: "
                     "fewer steps per strain at low rates.");
   table
-      .add_number("shear.max_reynolds_number", "", kDefaults.max_reynolds_number,
+      .add_number("shear.max_reynolds_number", "", kShearDefaults.max_reynolds_number,
                   "Largest cell Reynolds number rate R^2 / nu the viscosity scaling may reach "
                   "(Stokes flow needs << 1).")
       .above(0.0);

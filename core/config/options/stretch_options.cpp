@@ -7,23 +7,24 @@ namespace rbcsim::config {
 namespace {
 
 // The defaults come from the case's settings struct: one source of truth.
-const cases::StretchSettings kDefaults{};
+const cases::StretchSettings kStretchDefaults{};
 
 void add_contact_options(OptionTable& table) {
-  table.add_choice("stretch.contact.rule", cases::contact_rule_names(), kDefaults.contact.rule,
+  table.add_choice("stretch.contact.rule", cases::contact_rule_names(),
+                   kStretchDefaults.contact.rule,
                    "Which vertices the tweezers hold at each end of the pull axis: those within "
                    "the contact diameter of the end vertex, or a fixed number of extreme vertices "
                    "(HemoCell).");
   table
-      .add_number("stretch.contact.diameter_um", "um", kDefaults.contact.diameter_um,
+      .add_number("stretch.contact.diameter_um", "um", kStretchDefaults.contact.diameter_um,
                   "Bead contact diameter of the contact-diameter rule (Mills et al. 2004: 2 um).")
       .above(0.0);
   table
       .add_integer("stretch.contact.extreme_vertex_count", "",
-                   kDefaults.contact.extreme_vertex_count,
+                   kStretchDefaults.contact.extreme_vertex_count,
                    "Vertices per patch of the extreme-vertices rule (HemoCell: 7).")
       .at_least(1);
-  table.add_boolean("stretch.contact.rigid", kDefaults.contact.rigid,
+  table.add_boolean("stretch.contact.rigid", kStretchDefaults.contact.rigid,
                     "The bead holds its contact patch rigid: the patch translates as one body "
                     "(Mills et al. 2004). false: each patch vertex moves under its share of the "
                     "force alone (HemoCell).");
@@ -31,22 +32,23 @@ void add_contact_options(OptionTable& table) {
 
 void add_quasi_static_options(OptionTable& table) {
   table.add_choice("stretch.quasi_static.relaxation", cases::relaxation_method_names(),
-                   kDefaults.relaxation, "Membrane-only relaxation to equilibrium at each force.");
+                   kStretchDefaults.relaxation,
+                   "Membrane-only relaxation to equilibrium at each force.");
   table
       .add_number("stretch.quasi_static.force_tolerance_pN", "pN",
-                  kDefaults.relaxation_settings.force_tolerance_pN,
+                  kStretchDefaults.relaxation_settings.force_tolerance_pN,
                   "Equilibrium reached when the largest net vertex force (membrane + tweezers) "
                   "is below this.")
       .above(0.0);
   table
       .add_integer("stretch.quasi_static.max_iterations", "",
-                   static_cast<int>(kDefaults.relaxation_settings.max_iterations),
+                   static_cast<int>(kStretchDefaults.relaxation_settings.max_iterations),
                    "Relaxation iterations allowed per force; reaching it fails the run.")
       .at_least(1);
 }
 
 void add_fluid_options(OptionTable& table) {
-  const auto& fluid = kDefaults.fluid;
+  const auto& fluid = kStretchDefaults.fluid;
   // Plasma's by default: the equilibrium does not depend on it and the steps to reach it grow as
   // nu^2, but a third of it already went unstable at 50 pN (core/cases/README.md).
   table
@@ -91,7 +93,7 @@ void add_fluid_options(OptionTable& table) {
 }  // namespace
 
 void add_stretch_options(OptionTable& table) {
-  table.add_choice("stretch.mode", cases::stretch_mode_names(), kDefaults.mode,
+  table.add_choice("stretch.mode", cases::stretch_mode_names(), kStretchDefaults.mode,
                    "How each force reaches its steady shape (quasi-static: the membrane alone "
                    "relaxed to equilibrium, no fluid; fluid: the cell in fluid at rest, LBM + "
                    "IBM, each force run to a steady state).");
