@@ -106,7 +106,8 @@ void run_capillary_command(const CapillaryOptions& options) {
   const auto config = resolve_capillary_config(options);
   const auto wall = setup::capillary_wall_from(config);
   const auto settings = setup::capillary_settings_from(config, wall);
-  const auto cell_mesh = setup::cell_mesh_from(config);
+  auto cell_mesh = setup::cell_mesh_from(config);
+  setup::add_edge_spacing_notice(cell_mesh, config.number("lattice.spacing_um"));
   for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
 
   const RunDirectory directory("capillary", options.common, config);

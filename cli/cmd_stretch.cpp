@@ -179,7 +179,9 @@ void run_stretch_command(const StretchOptions& options) {
   auto settings = setup::stretch_settings_from(config);
   require_fluid_mode_for_checkpoints(options, settings);
   const auto parameters = setup::membrane_parameters_from(config);
-  const auto cell_mesh = setup::cell_mesh_from(config);
+  auto cell_mesh = setup::cell_mesh_from(config);
+  if (settings.mode == "fluid")
+    setup::add_edge_spacing_notice(cell_mesh, config.number("lattice.spacing_um"));
   for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
   const auto cell = cases::prepare_stretch_cell(cell_mesh.mesh, settings.contact);
   const membrane::MembraneModel model(cell.mesh, parameters);

@@ -68,10 +68,12 @@ void RunDirectory::start(const config::Config& config, const setup::CellMesh& ce
   auto content = config::config_with_derived_values(config);
   content["run"] = {{"command", command_},        {"version", RBCSIM_VERSION},
                     {"mesh_source", cell.source}, {"mesh_sha256", mesh_sha256(cell.mesh)},
-                    {"threads", threads_},        {"started_utc", started_utc_}};
+                    {"threads", threads_},        {"started_utc", started_utc_},
+                    {"notices", cell.run_notices}};
   io::write_text_atomically(
       path_ / "config.json",
       content.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+  for (const auto& notice : cell.run_notices) std::cerr << "rbcsim: notice: " << notice << '\n';
 }
 
 nlohmann::ordered_json RunDirectory::result_head(bool ok) const {

@@ -1,7 +1,7 @@
 // The run directory every experiment command writes (calibrate, stretch, shear, capillary), and
 // that `rbcsim report` reads:
 //   config.json  the resolved config with its "derived" values, plus a "run" object: command,
-//                version, mesh_source, mesh_sha256, threads, started_utc;
+//                version, mesh_source, mesh_sha256, threads, started_utc, notices;
 //   result.json  command, version, morphology, status ("ok" | "failed" | "interrupted"),
 //   wall_time_s, threads,
 //                headline, files, and the command's own object (schemas/result.schema.json);
@@ -37,7 +37,8 @@ class RunDirectory {
   int threads() const { return threads_; }
   double elapsed_s() const;
 
-  // Creates the directory (InputError if that fails) and writes config.json.
+  // Creates the directory (InputError if that fails), writes config.json and tells the cell's
+  // run notices (stderr, and config.json's "run" object).
   void start(const config::Config& config, const setup::CellMesh& cell) const;
   // command, version, morphology, status, wall_time_s, threads: the head of result.json.
   nlohmann::ordered_json result_head(bool ok) const;

@@ -1,12 +1,15 @@
 #include "setup/cell_from_config.hpp"
 
 #include <array>
+#include <cmath>
 #include <utility>
 
 #include "cases/capillary_observables.hpp"
+#include "common/format.hpp"
 #include "config/validation.hpp"
 #include "ibm/delta_kernels.hpp"
 #include "mesh/import.hpp"
+#include "mesh/inspection.hpp"
 
 namespace rbcsim::setup {
 namespace {
@@ -60,13 +63,26 @@ CellMesh cell_mesh_from(const config::Config& config) {
     mesh::ImportOptions options;
     options.max_triangles = static_cast<std::size_t>(config.integer("mesh.max_triangles"));
     auto imported = mesh::import_mesh(file, options);
-    return {std::move(imported.mesh), file, std::move(imported.notices)};
+    return {std::move(imported.mesh), file, std::move(imported.notices), {}};
   }
   const auto shape = config.string("morphology");
   const auto level = config.integer("mesh.subdivisions");
   return {mesh::generate_cell(shape, level, cell_shape_parameters_from(config)),
           "built-in " + shape + " level " + std::to_string(level),
+          {},
           {}};
+}
+
+void add_edge_spacing_notice(CellMesh& cell, double spacing_um) {
+  const double edge_um = mesh::inspect_mesh(cell.mesh).edge_mean_um;
+  const double edge_per_spacing = edge_um / spacing_um;
+  if (edge_per_spacing >= kQuietEdgePerSpacing) return;
+  cell.run_notices.push_back(
+      "the membrane's mean edge (" + format_number(std::round(edge_um * 1000.0) / 1000.0) +
+      " um) is " + format_number(std::round(edge_per_spacing * 100.0) / 100.0) +
+      " lattice spacings (lattice.spacing_um = " + format_number(spacing_um) +
+      "); with edges of half a spacing the paper's cell fails at the local-area limit in "
+      "sustained flow, with edges of about one spacing it passes (README.md, rbcsim capillary)");
 }
 
 void require_cell_fits_domain(const mesh::TriangleMesh& cell, const Vec3& domain_extent_um,

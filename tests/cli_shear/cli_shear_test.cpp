@@ -32,7 +32,12 @@ TEST(CliShear, WritesTheRunDirectoryAndPrintsItsResultAsJson) {
                                      "--output '" + run_dir.string() + "'",
                                  scratch.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  EXPECT_EQ(result.err, "");  // stderr is not a terminal: no progress
+  // stderr is not a terminal, so no progress; only the notice that this cell's edges (0.49 um)
+  // are half a lattice spacing (setup::add_edge_spacing_notice), which config.json keeps too.
+  const auto notices = read_json(run_dir / "config.json")["run"]["notices"];
+  ASSERT_EQ(notices.size(), 1u);
+  EXPECT_EQ(result.err, "rbcsim: notice: " + notices[0].get<std::string>() + "\n");
+  EXPECT_NE(result.err.find("0.49 lattice spacings (lattice.spacing_um = 1)"), std::string::npos);
   const auto printed = nlohmann::json::parse(result.out);
   EXPECT_EQ(printed, read_json(run_dir / "result.json"));
   EXPECT_EQ(printed["command"], "shear");
@@ -101,7 +106,9 @@ TEST(CliShear, InstabilityExitsOneAndRecordsTheFailure) {
           run_dir.string() + "'",
       scratch.path());
   EXPECT_EQ(result.exit_code, 1);
-  EXPECT_EQ(result.err.rfind("rbcsim: failed: shear: rate 2000 1/s: step 1", 0), 0u) << result.err;
+  // After the edge-to-spacing notice of this coarse cell (see the test above).
+  EXPECT_NE(result.err.find("\nrbcsim: failed: shear: rate 2000 1/s: step 1"), std::string::npos)
+      << result.err;
   const auto written = read_json(run_dir / "result.json");
   EXPECT_EQ(written["status"], "failed");
   EXPECT_EQ(written["shear"]["rates"][0]["steady"], false);

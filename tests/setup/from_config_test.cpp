@@ -81,4 +81,22 @@ TEST(CellFromConfig, ReadsTheConfiguredMeshFile) {
   EXPECT_EQ(cell.source, file);
 }
 
+// The paper's 2562-vertex cell (edges ~0.25 um) on dx = 0.5 um gets the notice; on dx = 0.25 um,
+// or the 642-vertex cell (edges ~0.5 um) on dx = 0.5 um, does not.
+TEST(CellFromConfig, EdgesUnderThreeQuartersOfASpacingGetANotice) {
+  auto paper_cell = rbcsim::setup::cell_mesh_from(resolve_config({}));
+  rbcsim::setup::add_edge_spacing_notice(paper_cell, 0.25);
+  EXPECT_TRUE(paper_cell.run_notices.empty());
+  rbcsim::setup::add_edge_spacing_notice(paper_cell, 0.5);
+  ASSERT_EQ(paper_cell.run_notices.size(), 1u);
+  EXPECT_NE(paper_cell.run_notices[0].find("0.49 lattice spacings (lattice.spacing_um = 0.5)"),
+            std::string::npos)
+      << paper_cell.run_notices[0];
+
+  auto coarse_cell =
+      rbcsim::setup::cell_mesh_from(resolve_config({.assignments = {"mesh.subdivisions=3"}}));
+  rbcsim::setup::add_edge_spacing_notice(coarse_cell, 0.5);
+  EXPECT_TRUE(coarse_cell.run_notices.empty());
+}
+
 }  // namespace
