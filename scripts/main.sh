@@ -52,13 +52,15 @@ shear_setting=(--set mesh.subdivisions=3 --set lattice.spacing_um=0.75 --set mem
   --output "$(fresh_run shear-discocyte-four-terms)"
 
 stage "capillary (three morphologies, the paper's three-morphology tube and 6.8 um throat)"
-# 642-vertex cells on the paper's dx = 0.5 um at Re 0.04. The links are doubled (the coarser
-# mesh's links are twice as long, and Eq. 6's spring weakens as 1/L0: doubling restores the
-# paper's shear modulus) and the local-area weight is 80 kBT instead of Table 2's 5, without which
-# a triangle steps onto the area limit in the throat (README.md, capillary). One thread per run,
+# 642-vertex cells on the paper's dx = 0.5 um at Re 0.04, with Table 2's moduli: their edges are
+# twice as long as the 2562-vertex cell's, and both the link and the local-area modulus go as
+# k / L0 (the hexagonal patch test of `rbcsim calibrate`), so k_link and k_area are doubled. Edges
+# about one lattice spacing long are what lets the cell through: the 2562-vertex cell on this
+# lattice (edges dx / 2) fails at the area limit before the throat (README.md, capillary). The
+# vertex cap is 4 x 50 pN: a vertex here carries four paper vertices' share. One thread per run,
 # the three runs side by side.
 capillary_setting=(--geometry paper-morphology --set mesh.subdivisions=3
-                   --set membrane.k_area_kBT=80 --set membrane.vertex_force_cap_pN=200
+                   --set membrane.k_area_kBT=10 --set membrane.vertex_force_cap_pN=200
                    --set output.fluid_interval_s=0 --threads 1)
 declare -A capillary_k_link=([discocyte]=14 [echinocyte-III]=22 [stomatocyte-II]=22)
 capillary_pids=()
