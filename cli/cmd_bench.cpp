@@ -23,7 +23,6 @@
 #include "setup/cell_from_config.hpp"
 #include "setup/membrane_from_config.hpp"
 
-// A namespace of its own: the command's helpers stay apart from the other commands'.
 namespace rbcsim::cli::bench_command {
 namespace {
 

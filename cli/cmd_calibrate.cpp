@@ -18,7 +18,6 @@
 #include "setup/calibrate_from_config.hpp"
 #include "setup/membrane_from_config.hpp"
 
-// A namespace of its own: the command's helpers stay apart from the other commands'.
 namespace rbcsim::cli::calibrate_command {
 namespace {
 

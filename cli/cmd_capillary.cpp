@@ -21,7 +21,6 @@
 #include "setup/capillary_from_config.hpp"
 #include "setup/coupling_from_config.hpp"
 
-// A namespace of its own: the command's helpers stay apart from the other commands'.
 namespace rbcsim::cli::capillary_command {
 namespace {
 

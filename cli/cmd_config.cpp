@@ -8,7 +8,6 @@
 #include "config/config.hpp"
 #include "config/schema.hpp"
 
-// A namespace of its own: the command's helpers stay apart from the other commands'.
 namespace rbcsim::cli::config_command {
 namespace {
 

@@ -13,7 +13,6 @@
 #include "mesh/stl_writer.hpp"
 #include "setup/cell_from_config.hpp"
 
-// A namespace of its own: the command's helpers stay apart from the other commands'.
 namespace rbcsim::cli::mesh_command {
 namespace {
 

@@ -8,7 +8,6 @@
 #include "command_registry.hpp"
 #include "report/report.hpp"
 
-// A namespace of its own: the command's helpers stay apart from the other commands'.
 namespace rbcsim::cli::report_command {
 namespace {
 

@@ -32,7 +32,6 @@
 #include "setup/membrane_from_config.hpp"
 #include "setup/shear_from_config.hpp"
 
-// A namespace of its own: the command's helpers stay apart from the other commands'.
 namespace rbcsim::cli::shear_command {
 namespace {
 

@@ -23,7 +23,6 @@
 #include "setup/membrane_from_config.hpp"
 #include "setup/stretch_from_config.hpp"
 
-// A namespace of its own: the command's helpers stay apart from the other commands'.
 namespace rbcsim::cli::stretch_command {
 namespace {
 

@@ -1,5 +1,7 @@
 // Subcommands register themselves here from their own file; main() attaches them all to the
 // application. Order of registration does not matter: help lists them in the order of `rank`.
+// Each cli/cmd_<name>.cpp keeps its helpers in a namespace of its own, rbcsim::cli::<name>_command,
+// so that the commands' same-named helpers stay apart in the unity build.
 #pragma once
 
 #include <CLI/CLI.hpp>
