@@ -65,9 +65,10 @@ std::string shape_file_name(std::size_t index) {
 }
 
 constexpr const char* kPointFileName = "point.json";
+constexpr const char* kHistoryFileName = "history.csv";
 
-// Writes each rate's final shape and its point (what a resumed run keeps) as it ends, from the
-// thread that ran it, and reports progress.
+// Writes each rate's final shape, its point (what a resumed run keeps) and its shape history as it
+// ends, from the thread that ran it, and reports progress.
 class ShapeRecorder {
  public:
   ShapeRecorder(const RunDirectory& run, const config::Config& config, std::size_t rate_count,
@@ -87,6 +88,8 @@ class ShapeRecorder {
     auto record = cases::shear_point_record(point);
     record["config_sha256"] = fingerprint_;
     io::write_text_atomically(rate_path / kPointFileName, record.dump(2) + "\n");
+    io::write_csv_file(rate_path / kHistoryFileName, cases::shear_history_columns(),
+                       cases::shear_history_rows(point));
     const std::lock_guard lock(mutex_);
     ++finished_;
     progress_.update("shear: " + std::to_string(finished_) + "/" + std::to_string(rate_count_) +
@@ -138,19 +141,20 @@ void print_table(const nlohmann::ordered_json& result, const std::vector<cases::
   for (const auto& term : section["forces_terms"]) {
     std::printf(" %s", term.get<std::string>().c_str());
   }
-  std::printf("\n%8s %10s %8s %8s %9s %10s %6s %8s %8s %10s %9s %7s %7s", "rate_1/s", "sim_rate",
-              "Re", "Ca", "length_um", "breadth_um", "DI", "incl_deg", "tt_hz", "smooth_rad",
-              "rough_rad", "strain", "steady");
+  std::printf("\n%8s %10s %8s %8s %9s %8s %10s %6s %8s %8s %10s %9s %7s %7s", "rate_1/s",
+              "sim_rate", "Re", "Ca", "length_um", "swing_um", "breadth_um", "DI", "incl_deg",
+              "tt_hz", "smooth_rad", "rough_rad", "strain", "steady");
   if (verbose) std::printf(" %8s %10s %s", "steps", "wall_s", "stop");
   std::printf("\n");
   for (const auto& point : points) {
     const auto& plan = point.plan;
-    std::printf("%8.0f %10.4g %8.3g %8.3g %9.4f %10.4f %6.3f %8.2f %8.3g %10.4f %9.4f %7.1f %7s",
-                plan.shear_rate_per_s, plan.simulated_shear_rate_per_s, plan.reynolds_number,
-                plan.capillary_number, point.shape.length_um, point.shape.breadth_um,
-                point.shape.deformation_index, point.shape.inclination_deg, point.tank_treading_hz,
-                point.smoothness_rad, point.roughness_rad, point.strain,
-                !point.failure.empty() ? "FAILED" : (point.steady ? "yes" : "NO"));
+    std::printf(
+        "%8.0f %10.4g %8.3g %8.3g %9.4f %8.4f %10.4f %6.3f %8.2f %8.3g %10.4f %9.4f %7.1f %7s",
+        plan.shear_rate_per_s, plan.simulated_shear_rate_per_s, plan.reynolds_number,
+        plan.capillary_number, point.shape.length_um, point.length_swing_um, point.shape.breadth_um,
+        point.shape.deformation_index, point.shape.inclination_deg, point.tank_treading_hz,
+        point.smoothness_rad, point.roughness_rad, point.strain,
+        !point.failure.empty() ? "FAILED" : (point.steady ? "yes" : "NO"));
     if (verbose) {
       std::printf(" %8zu %10.2f %s", point.steps, point.wall_time_s,
                   point.failure.empty() ? point.stop_reason.c_str() : point.failure.c_str());

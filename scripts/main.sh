@@ -10,7 +10,7 @@
 #   4. shear: a short sweep (0, 1000, 2000 1/s) of the discocyte with and without F_ad/F_tc, on the
 #      coarse setting of README.md (642 vertices, dx 0.75 um, 10 strains: not yet steady);
 #   5. capillary: the three morphologies through the paper's three-morphology tube (6.8 um throat,
-#      Re 0.04, dx 0.5 um) with 642-vertex cells and a stiffer local-area term (README.md);
+#      Re 0.04, dx 0.5 um) with 642-vertex cells and Table 2's moduli (k_link, k_area x2; README.md);
 #   6. report: out/report/report.html, summary.md, summary.json over every run above.
 # How far each setting is from the paper's is in README.md ("The main job").
 set -euo pipefail

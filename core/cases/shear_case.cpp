@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -25,10 +26,10 @@ namespace {
 // The symmetry axis counts as z when the least-variance principal axis is this close to it: a
 // generated shape has it on z up to round-off, a mesh that does not is aligned first.
 constexpr double kSymmetryAxisCosineTolerance = 1e-6;
-// Tank-treading samples per check interval: the tracked point must turn by less than pi between
+// Record samples per check interval: the tank-treading point must turn by less than pi between
 // two samples (a tank-treading membrane turns at about rate / 2, 0.5 rad per unit strain; the
 // tips of an elongated cell faster).
-constexpr double kPhaseSamplesPerCheck = 4.0;
+constexpr std::size_t kSamplesPerCheck = 4;
 
 struct ShearBoundary {
   std::string_view name;
@@ -83,39 +84,6 @@ units::UnitConverter simulated_units(const ShearEngine& engine, const ShearRateP
   return units::UnitConverter(lattice);
 }
 
-// Stops when every criterion holds at the same step; remembers that it did.
-class AllOf final : public coupling::StopCriterion {
- public:
-  explicit AllOf(std::vector<std::unique_ptr<coupling::StopCriterion>> criteria, bool& held)
-      : criteria_(std::move(criteria)), held_(held) {}
-  std::optional<std::string> check(const coupling::CoupledSimulation& simulation) override {
-    std::string reasons;
-    bool all = true;
-    for (auto& criterion : criteria_) {  // every one, every step: each keeps its own history
-      const auto reason = criterion->check(simulation);
-      all = all && reason.has_value();
-      if (reason) reasons.append(reasons.empty() ? "" : "; ").append(*reason);
-    }
-    if (!all) return std::nullopt;
-    held_ = true;
-    return reasons;
-  }
-  void save_state(StateArchive& archive, const std::string& prefix) const override {
-    for (std::size_t i = 0; i < criteria_.size(); ++i) {
-      criteria_[i]->save_state(archive, prefix + std::to_string(i) + ".");
-    }
-  }
-  void restore_state(StateArchive& archive, const std::string& prefix) override {
-    for (std::size_t i = 0; i < criteria_.size(); ++i) {
-      criteria_[i]->restore_state(archive, prefix + std::to_string(i) + ".");
-    }
-  }
-
- private:
-  std::vector<std::unique_ptr<coupling::StopCriterion>> criteria_;
-  bool& held_;
-};
-
 std::vector<Vec3> positions_now_um(const coupling::CoupledSimulation& simulation) {
   std::vector<Vec3> positions;
   for (const Vec3& p : simulation.cell(0).positions_lu()) {
@@ -124,41 +92,39 @@ std::vector<Vec3> positions_now_um(const coupling::CoupledSimulation& simulation
   return positions;
 }
 
-std::unique_ptr<coupling::StopCriterion> steady_shape(double rate_per_s,
-                                                      const ShearSettings& settings, bool& held) {
-  const coupling::SteadyStateTolerance tolerance{
-      .relative_rate_per_s = settings.steady_tolerance_per_strain * rate_per_s,
-      .check_interval_s = settings.check_interval_strain / rate_per_s};
-  std::vector<std::unique_ptr<coupling::StopCriterion>> criteria;
-  criteria.push_back(coupling::stop_at_steady_state(
-      "the length",
-      [](const coupling::CoupledSimulation& s) {
-        return largest_vertex_distance_um(positions_now_um(s));
-      },
-      tolerance));
-  criteria.push_back(coupling::stop_at_steady_state(
-      "the breadth",
-      [](const coupling::CoupledSimulation& s) {
-        return measure_shear_shape(positions_now_um(s)).breadth_um;
-      },
-      tolerance));
-  return std::make_unique<AllOf>(std::move(criteria), held);
-}
+// What ShearRecord needs to know of its rate.
+struct RecordSetup {
+  std::size_t tracked_vertex = 0;
+  std::size_t sample_interval_steps = 1;
+  double strain_per_sample = 0.0;     // in the rate's strain units (ShearPoint::strain)
+  double time_unit_rate_per_s = 0.0;  // simulated rate (rate 0: its time unit)
+  bool rotating = false;              // rate > 0: the windows are half turns of the tracked point
+  double tolerance_per_strain = 0.0;
+};
 
-// The unwrapped angle of one membrane point about the cell's centroid, sampled every
-// interval_steps steps.
-class PhaseRecorder {
+// A rate's record and its steady state (shear_case.hpp, "Steady state"). The first stop criterion
+// of the rate, so it sees every step: every sample_interval_steps it samples the tracked point's
+// unwrapped angle and the cell's shape, and every kSamplesPerCheck samples it compares the shape's
+// means over the last window with those over the window before. Its series and its count of
+// steady checks ride in the checkpoint, so a resumed rate ends as a straight one.
+class ShearRecord final : public coupling::StopCriterion {
  public:
-  PhaseRecorder(std::size_t vertex, std::size_t interval_steps)
-      : vertex_(vertex), interval_steps_(interval_steps) {}
-  void operator()(const coupling::CoupledSimulation& simulation) {
-    const auto& cell = simulation.cell(0);
-    const double angle = in_plane_angle_rad(cell.positions_lu()[vertex_], cell.centroid_lu());
-    angles_rad_.push_back(angles_rad_.empty() ? angle
-                                              : unwrap_angle_rad(angles_rad_.back(), angle));
-    times_s_.push_back(simulation.time_s());
-    steps_.push_back(static_cast<double>(simulation.time_step()));
+  ShearRecord(RecordSetup setup, bool& steady) : setup_(setup), steady_(steady) {}
+
+  std::optional<std::string> check(const coupling::CoupledSimulation& simulation) override {
+    const std::size_t step = simulation.time_step();
+    if (step % setup_.sample_interval_steps != 0) return std::nullopt;
+    sample(simulation);
+    if ((step / setup_.sample_interval_steps) % kSamplesPerCheck != 0) return std::nullopt;
+    steady_checks_ = window_is_steady() ? steady_checks_ + 1 : 0;
+    if (steady_checks_ < kSteadyChecksInARow) return std::nullopt;
+    steady_ = true;
+    return "steady: the mean length and breadth over the last " +
+           format_number(window_strain(window_samples())) + " strain within " +
+           format_number(setup_.tolerance_per_strain) + " per strain of the window before, " +
+           std::to_string(kSteadyChecksInARow) + " checks in a row";
   }
+
   // Over the second half of the run (the first is the start-up); 0 with too few samples.
   double frequency_hz() const {
     if (times_s_.size() < 2) return 0.0;
@@ -169,50 +135,93 @@ class PhaseRecorder {
     return rotation_frequency_hz(std::span(times_s_).subspan(first),
                                  std::span(angles_rad_).subspan(first));
   }
-  // The samples taken on their interval: an interrupted run's observers also see the state
-  // reached between two intervals, which a straight run never samples.
-  void save_state(StateArchive& archive, const std::string& prefix) const {
-    std::vector<double> steps, times_s, angles_rad;
-    for (std::size_t i = 0; i < steps_.size(); ++i) {
-      if (static_cast<std::size_t>(steps_[i]) % interval_steps_ != 0) continue;
-      steps.push_back(steps_[i]);
-      times_s.push_back(times_s_[i]);
-      angles_rad.push_back(angles_rad_[i]);
+
+  // The shape averaged over the last window and that window's strain; nothing before the first
+  // whole window.
+  std::optional<std::pair<AveragedShape, double>> averaged_shape() const {
+    const std::size_t n = window_samples();
+    if (n == 0 || n > shapes_.size()) return std::nullopt;
+    return std::pair{average_shapes(std::span(shapes_).last(n)), window_strain(n)};
+  }
+
+  std::vector<ShearSample> history() const {
+    std::vector<ShearSample> samples;
+    for (std::size_t i = 0; i < times_s_.size(); ++i) {
+      samples.push_back({times_s_[i] * setup_.time_unit_rate_per_s, shapes_[i]});
     }
-    archive.put(prefix + "steps", std::move(steps));
-    archive.put(prefix + "times_s", std::move(times_s));
-    archive.put(prefix + "angles_rad", std::move(angles_rad));
-  }
-  void restore_state(StateArchive& archive, const std::string& prefix) {
-    steps_ = archive.take(prefix + "steps", std::nullopt);
-    times_s_ = archive.take(prefix + "times_s", steps_.size());
-    angles_rad_ = archive.take(prefix + "angles_rad", steps_.size());
+    return samples;
   }
 
- private:
-  std::size_t vertex_;
-  std::size_t interval_steps_;
-  std::vector<double> steps_;
-  std::vector<double> times_s_;
-  std::vector<double> angles_rad_;
-};
-
-// Never stops the run: carries the tank-treading record in the checkpoint.
-class PhaseInCheckpoint final : public coupling::StopCriterion {
- public:
-  explicit PhaseInCheckpoint(std::shared_ptr<PhaseRecorder> phase) : phase_(std::move(phase)) {}
-  std::optional<std::string> check(const coupling::CoupledSimulation& /*simulation*/) override {
-    return std::nullopt;
-  }
   void save_state(StateArchive& archive, const std::string& prefix) const override {
-    phase_->save_state(archive, prefix);
+    archive.put(prefix + "times_s", times_s_);
+    archive.put(prefix + "angles_rad", angles_rad_);
+    for (const auto& [name, member] : kShapeSeries) {
+      std::vector<double> values;
+      for (const ShearShape& shape : shapes_) values.push_back(shape.*member);
+      archive.put(prefix + name, std::move(values));
+    }
+    archive.put(prefix + "steady_checks", {static_cast<double>(steady_checks_)});
   }
   void restore_state(StateArchive& archive, const std::string& prefix) override {
-    phase_->restore_state(archive, prefix);
+    times_s_ = archive.take(prefix + "times_s", std::nullopt);
+    angles_rad_ = archive.take(prefix + "angles_rad", times_s_.size());
+    shapes_.assign(times_s_.size(), ShearShape{});
+    for (const auto& [name, member] : kShapeSeries) {
+      const auto values = archive.take(prefix + name, times_s_.size());
+      for (std::size_t i = 0; i < values.size(); ++i) shapes_[i].*member = values[i];
+    }
+    steady_checks_ = static_cast<int>(archive.take(prefix + "steady_checks", 1).front());
   }
 
  private:
-  std::shared_ptr<PhaseRecorder> phase_;
+  static constexpr int kSteadyChecksInARow = 3;  // a window pair can agree by chance once
+  static constexpr std::array<std::pair<const char*, double ShearShape::*>, 4> kShapeSeries{
+      {{"lengths_um", &ShearShape::length_um},
+       {"breadths_um", &ShearShape::breadth_um},
+       {"deformation_indices", &ShearShape::deformation_index},
+       {"inclinations_deg", &ShearShape::inclination_deg}}};
+
+  void sample(const coupling::CoupledSimulation& simulation) {
+    const auto& cell = simulation.cell(0);
+    const double angle =
+        in_plane_angle_rad(cell.positions_lu()[setup_.tracked_vertex], cell.centroid_lu());
+    angles_rad_.push_back(angles_rad_.empty() ? angle
+                                              : unwrap_angle_rad(angles_rad_.back(), angle));
+    times_s_.push_back(simulation.time_s());
+    shapes_.push_back(measure_shear_shape(positions_now_um(simulation)));
+  }
+
+  // Samples per window: the tracked point's last half turn (one swinging period) but one check
+  // interval at least; one check interval at rate 0. 0 while the point has not turned by pi.
+  std::size_t window_samples() const {
+    if (!setup_.rotating) return kSamplesPerCheck;
+    const std::size_t half_turn = samples_in_last_half_turn(angles_rad_);
+    return half_turn == 0 ? 0 : std::max<std::size_t>(half_turn, kSamplesPerCheck);
+  }
+
+  double window_strain(std::size_t samples) const {
+    return static_cast<double>(samples) * setup_.strain_per_sample;
+  }
+
+  // The last window against the one before: length and breadth each within the tolerance per
+  // strain between the windows' centres.
+  bool window_is_steady() const {
+    const std::size_t n = window_samples();
+    if (n == 0 || 2 * n > shapes_.size()) return false;
+    const auto shapes = std::span(shapes_);
+    const auto last = average_shapes(shapes.last(n)).mean;
+    const auto before = average_shapes(shapes.last(2 * n).first(n)).mean;
+    const double allowed = setup_.tolerance_per_strain * window_strain(n);
+    return std::abs(last.length_um - before.length_um) <= allowed * last.length_um &&
+           std::abs(last.breadth_um - before.breadth_um) <= allowed * last.breadth_um;
+  }
+
+  RecordSetup setup_;
+  bool& steady_;
+  int steady_checks_ = 0;
+  std::vector<double> times_s_;
+  std::vector<double> angles_rad_;
+  std::vector<ShearShape> shapes_;
 };
 
 // The vertex farthest along +x: on the rim of a cell whose axis is y, in the shear plane.
@@ -371,15 +380,21 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
       box_origin_um(box, dx_um));
   simulation.add_cell(membrane::MembraneModel(cell, model.parameters()), cell.positions_um);
   const double time_unit_rate = plan.strain_rate_lu / units.dt_s();
+  const auto sample_interval_steps = steps_for(
+      settings.check_interval_strain / static_cast<double>(kSamplesPerCheck), plan.strain_rate_lu);
   bool steady = false;
-  simulation.add_stop_criterion(steady_shape(time_unit_rate, settings, steady));
+  auto owned_record = std::make_unique<ShearRecord>(
+      RecordSetup{
+          .tracked_vertex = tracked_vertex(cell),
+          .sample_interval_steps = sample_interval_steps,
+          .strain_per_sample = static_cast<double>(sample_interval_steps) * plan.strain_rate_lu,
+          .time_unit_rate_per_s = time_unit_rate,
+          .rotating = plan.shear_rate_per_s > 0.0,
+          .tolerance_per_strain = settings.steady_tolerance_per_strain},
+      steady);
+  const ShearRecord& record = *owned_record;  // the simulation owns it from here
+  simulation.add_stop_criterion(std::move(owned_record));
   simulation.add_stop_criterion(coupling::stop_at_time(settings.max_strain / time_unit_rate));
-  const auto phase_interval_steps =
-      steps_for(settings.check_interval_strain / kPhaseSamplesPerCheck, plan.strain_rate_lu);
-  auto phase = std::make_shared<PhaseRecorder>(tracked_vertex(cell), phase_interval_steps);
-  simulation.add_observer({"tank_treading_point", phase_interval_steps,
-                           [phase](const coupling::CoupledSimulation& s) { (*phase)(s); }});
-  simulation.add_stop_criterion(std::make_unique<PhaseInCheckpoint>(phase));
   if (hooks.configure) hooks.configure(rate_index, simulation);
 
   ShearPoint point;
@@ -396,9 +411,16 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
   // From the simulation's counters (restored on resume), not from this run() call's summary.
   point.force_cap_steps = simulation.capped_steps_per_cell().at(0);
   const auto positions_um = positions_now_um(simulation);
-  point.shape = measure_shear_shape(positions_um);
+  if (const auto averaged = record.averaged_shape()) {
+    point.shape = averaged->first.mean;
+    point.length_swing_um = averaged->first.length_swing_um;
+    point.window_strain = averaged->second;
+  } else {
+    point.shape = measure_shear_shape(positions_um);
+  }
   measure_surface(model, positions_um, point);
-  point.tank_treading_hz = phase->frequency_hz() / plan.viscosity_scale;
+  point.tank_treading_hz = record.frequency_hz() / plan.viscosity_scale;
+  point.history = record.history();
   point.steps = simulation.time_step();
   point.strain = simulation.time_s() * time_unit_rate;
   point.time_s = simulation.time_s() * plan.viscosity_scale;

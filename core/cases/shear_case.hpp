@@ -25,12 +25,20 @@
 // Reynolds limit allows. Times and frequencies are converted back to the physical rate.
 // Mach: the largest fluid speed, rate * gap / 2, must stay below 0.1 lattice units (InputError).
 //
-// Steady state: the length and the breadth both change by less than steady_tolerance_per_strain
-// of themselves per unit strain, over three checks check_interval_strain apart
-// (coupling::stop_at_steady_state on each, all at once). A rate that is not steady by max_strain
-// is reported with steady = false and the shape it had then, never as steady.
-// Rate 0 is the cell at rest: it runs with the physical viscosity for as many steps as a rate at
-// the Reynolds limit takes per strain, and its steady state is checked the same way.
+// Steady state. A red cell in shear tank-treads with swinging: its length, breadth and
+// inclination oscillate twice per turn of the membrane and never settle to constants, so the
+// steady state is periodic and is judged on means. The shape is sampled four times per
+// check_interval_strain; at every check the means of length and breadth over the last window are
+// compared with those over the window before, and the rate is steady when both differ by less
+// than steady_tolerance_per_strain of themselves per unit strain between the windows' centres, at
+// three checks in a row. A window is the last half turn of a tracked membrane point (one
+// period of the swinging: cases::samples_in_last_half_turn), one check interval at least; at rate
+// 0 (the cell at rest, no turning) one check interval. The reported shape is the mean over the last
+// window, with the length's swing in it (an ektacytometer's diffraction pattern is such a mean); a
+// rate that ends before a whole window reports its final shape. A rate that is not steady by
+// max_strain is reported with steady = false, never as steady.
+// Rate 0 runs with the physical viscosity for as many steps as a rate at the Reynolds limit takes
+// per strain, its "strain" counted in that time unit.
 #pragma once
 
 #include <cstddef>
@@ -57,7 +65,7 @@ struct ShearSettings {
   double gap_diameters = 3.0;
   // Periodic box length along x and z, in cell diameters.
   double width_diameters = 2.0;
-  double max_strain = 40.0;  // rate * time after which a rate is reported steady = false
+  double max_strain = 60.0;  // rate * time after which a rate is reported steady = false
   double steady_tolerance_per_strain = 2e-3;
   double check_interval_strain = 1.0;
   bool viscosity_scaling = true;
@@ -128,9 +136,19 @@ std::vector<ShearRatePlan> plan_shear_rates(const membrane::MembraneModel& model
                                             const ShearEngine& engine,
                                             const ShearSettings& settings);
 
+// The cell's shape at one instant of a rate's run.
+struct ShearSample {
+  double strain = 0.0;  // simulated rate * simulated time, as ShearPoint::strain
+  ShearShape shape;
+};
+
 struct ShearPoint {
   ShearRatePlan plan;
+  // Averaged over the last window of the steady-state check (window_strain of strain); the
+  // shape at the end of the run if it ended before a whole window (window_strain 0).
   ShearShape shape;
+  double length_swing_um = 0.0;  // largest minus smallest length over that window
+  double window_strain = 0.0;
   double tank_treading_hz = 0.0;  // physical; 0 at rate 0
   double smoothness_rad = 0.0;    // dihedral_change_rms_rad: overall and mesh-scale bending
   double roughness_rad = 0.0;     // dihedral_roughness_rad: the mesh-scale part only
@@ -143,6 +161,9 @@ struct ShearPoint {
   std::string failure;       // empty unless the run failed (instability): then steady = false
   bool interrupted = false;  // Ctrl-C: failure says so; the shape is the one reached
   double wall_time_s = 0.0;
+  // The shape every check_interval_strain / 4 of strain from the first sample (a resumed rate:
+  // from its checkpoint). Not kept in point.json: a completed point read back has none.
+  std::vector<ShearSample> history;
 };
 
 // Called when a rate ends, with its index in settings.rates_per_s, from the thread that ran it.

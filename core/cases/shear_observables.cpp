@@ -152,6 +152,34 @@ double unwrap_angle_rad(double previous_unwrapped_rad, double angle_rad) {
   return angle_rad + turns * kTurn;
 }
 
+AveragedShape average_shapes(std::span<const ShearShape> shapes) {
+  if (shapes.empty()) throw std::invalid_argument("average_shapes: no samples");
+  AveragedShape averaged;
+  const auto n = static_cast<double>(shapes.size());
+  double shortest_um = shapes.front().length_um;
+  double longest_um = shortest_um;
+  for (const ShearShape& shape : shapes) {
+    averaged.mean.length_um += shape.length_um / n;
+    averaged.mean.breadth_um += shape.breadth_um / n;
+    averaged.mean.deformation_index += shape.deformation_index / n;
+    averaged.mean.inclination_deg += shape.inclination_deg / n;
+    shortest_um = std::min(shortest_um, shape.length_um);
+    longest_um = std::max(longest_um, shape.length_um);
+  }
+  averaged.length_swing_um = longest_um - shortest_um;
+  return averaged;
+}
+
+std::size_t samples_in_last_half_turn(std::span<const double> unwrapped_angles_rad) {
+  if (unwrapped_angles_rad.empty()) return 0;
+  const double final_rad = unwrapped_angles_rad.back();
+  for (std::size_t count = 1; count < unwrapped_angles_rad.size(); ++count) {
+    const double earlier_rad = unwrapped_angles_rad[unwrapped_angles_rad.size() - 1 - count];
+    if (std::abs(final_rad - earlier_rad) >= std::numbers::pi) return count;
+  }
+  return 0;
+}
+
 double rotation_frequency_hz(std::span<const double> times_s,
                              std::span<const double> unwrapped_angles_rad) {
   const std::size_t n = times_s.size();

@@ -77,6 +77,24 @@ double in_plane_angle_rad(const Vec3& point, const Vec3& centre);
 // valid while the point turns by less than pi between two samples.
 double unwrap_angle_rad(double previous_unwrapped_rad, double angle_rad);
 
+// The shape averaged over a window of samples: what a cell that tank-treads with swinging (its
+// length, breadth and inclination oscillating twice per membrane turn) shows on average, as a
+// diffraction pattern recorded over many periods does (Bessis & Mohandas).
+struct AveragedShape {
+  ShearShape mean;               // each observable's mean over the samples
+  double length_swing_um = 0.0;  // largest minus smallest length among them
+};
+
+// Throws std::invalid_argument for no samples.
+AveragedShape average_shapes(std::span<const ShearShape> shapes);
+
+// How many of the last samples lie within the tracked point's last half turn: those after the
+// last sample whose unwrapped angle is pi or more from the final one. For a cell with a mirror-
+// symmetric rest shape in the shear plane (a disc seen edge-on) a half turn of the membrane is
+// one period of the swinging, so means over it carry no phase bias. 0 until the point has turned
+// by pi.
+std::size_t samples_in_last_half_turn(std::span<const double> unwrapped_angles_rad);
+
 // Rotation frequency from unwrapped angles sampled at times_s: minus the least-squares slope of
 // angle against time over 2 pi, Hz (positive for clockwise turning seen from +z). Needs two
 // samples at different times at least (std::invalid_argument otherwise).

@@ -17,6 +17,8 @@ nlohmann::ordered_json rate_entry(const ShearPoint& point) {
   nlohmann::ordered_json entry = {
       {"shear_rate_per_s", plan.shear_rate_per_s},
       {"length_um", number_or_null(point.shape.length_um)},
+      {"length_swing_um", number_or_null(point.length_swing_um)},
+      {"window_strain", point.window_strain},
       {"breadth_um", number_or_null(point.shape.breadth_um)},
       {"deformation_index", number_or_null(point.shape.deformation_index)},
       {"inclination_deg", number_or_null(point.shape.inclination_deg)},
@@ -70,6 +72,8 @@ ShearPoint shear_point_from_record(const nlohmann::json& record, const std::stri
   plan.strain_rate_lu = number("strain_rate_lu");
   point.shape = {number("length_um"), number("breadth_um"), number("deformation_index"),
                  number("inclination_deg")};
+  point.length_swing_um = number("length_swing_um");
+  point.window_strain = number("window_strain");
   point.tank_treading_hz = number("tank_treading_hz");
   point.smoothness_rad = number("smoothness_rad");
   point.roughness_rad = number("roughness_rad");
@@ -86,6 +90,8 @@ ShearPoint shear_point_from_record(const nlohmann::json& record, const std::stri
 std::vector<std::string> shear_table_columns() {
   return {"shear_rate_per_s",
           "length_um",
+          "length_swing_um",
+          "window_strain",
           "breadth_um",
           "deformation_index",
           "inclination_deg",
@@ -106,6 +112,8 @@ std::vector<double> shear_table_row(const ShearPoint& point) {
   const auto& plan = point.plan;
   return {plan.shear_rate_per_s,
           point.shape.length_um,
+          point.length_swing_um,
+          point.window_strain,
           point.shape.breadth_um,
           point.shape.deformation_index,
           point.shape.inclination_deg,
@@ -120,6 +128,20 @@ std::vector<double> shear_table_row(const ShearPoint& point) {
           point.strain,
           point.time_s,
           static_cast<double>(point.steps)};
+}
+
+std::vector<std::string> shear_history_columns() {
+  return {"strain", "length_um", "breadth_um", "deformation_index", "inclination_deg"};
+}
+
+std::vector<std::vector<double>> shear_history_rows(const ShearPoint& point) {
+  std::vector<std::vector<double>> rows;
+  for (const auto& sample : point.history) {
+    const auto& shape = sample.shape;
+    rows.push_back({sample.strain, shape.length_um, shape.breadth_um, shape.deformation_index,
+                    shape.inclination_deg});
+  }
+  return rows;
 }
 
 nlohmann::ordered_json shear_result_section(const ShearSettings& settings,

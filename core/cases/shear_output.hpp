@@ -15,6 +15,11 @@ namespace rbcsim::cases {
 std::vector<std::string> shear_table_columns();
 std::vector<double> shear_table_row(const ShearPoint& point);
 
+// <run dir>/rate_<i>/history.csv: the shape against strain (ShearPoint::history), one row per
+// sample.
+std::vector<std::string> shear_history_columns();
+std::vector<std::vector<double>> shear_history_rows(const ShearPoint& point);
+
 // {"boundary", "forces_terms", "viscosity_scaling", "rates": [...]}; non-finite numbers (a failed
 // rate's shape, Ca without a link term) become null.
 nlohmann::ordered_json shear_result_section(const ShearSettings& settings,

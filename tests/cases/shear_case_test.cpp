@@ -175,6 +175,31 @@ TEST(ShearRun, RestKeepsTheDiameterAndShearStretches) {
   EXPECT_NEAR(points[1].strain, 4.0, 0.01);
 }
 
+// The history samples the shape four times per unit strain (check_interval_strain 1): at 500 1/s
+// it starts near the rest diameter and grows; the tracked point has not yet turned by half a turn
+// in 4 strains, so there is no window to average over and the point is the final shape.
+TEST(ShearRun, HistorySamplesTheShapeFourTimesPerStrain) {
+  const auto points = CoarseRun({500.0}, 4.0).sweep(1);
+  ASSERT_EQ(points.size(), 1u);
+  const auto& history = points[0].history;
+  ASSERT_EQ(history.size(), 16u);
+  const double diameter_um = largest_vertex_distance_um(coarse_cell().positions_um);
+  EXPECT_NEAR(history.front().strain, 0.25, 0.01);
+  EXPECT_LT(history.front().shape.length_um, 1.03 * diameter_um);
+  for (std::size_t i = 1; i < history.size(); ++i) {
+    EXPECT_NEAR(history[i].strain - history[i - 1].strain, 0.25, 0.01) << i;
+  }
+  // The run ends at max_strain, which the rounded sample interval (0.249 strain here) need not hit:
+  // the last sample is within one interval before the end, and the cell's length changes by
+  // ~0.2 um per strain by then, so by 0.01 um at most in between.
+  EXPECT_LE(history.back().strain, points[0].strain);
+  EXPECT_GT(history.back().strain, points[0].strain - 0.25);
+  EXPECT_NEAR(history.back().shape.length_um, points[0].shape.length_um, 0.01);
+  EXPECT_NEAR(history.back().shape.breadth_um, points[0].shape.breadth_um, 0.01);
+  EXPECT_EQ(points[0].window_strain, 0.0);
+  EXPECT_EQ(points[0].length_swing_um, 0.0);
+}
+
 // Rates on two threads at once give exactly what one after the other gives.
 TEST(ShearRun, ParallelRatesEqualSequential) {
   const CoarseRun run({500.0, 2000.0}, 0.5);

@@ -88,6 +88,41 @@ TEST(ShearObservables, UnwrapKeepsTheAngleContinuous) {
   EXPECT_NEAR(unwrap_angle_rad(0.1, 0.2), 0.2, 1e-12);
 }
 
+// A point turning clockwise by pi/8 per sample: the last half turn holds 8 samples (the ninth
+// back is pi away, exactly: pi/8 and its multiples up to pi are exact in binary).
+TEST(ShearObservables, LastHalfTurnCountsTheSamplesWithinPiOfTheFinalAngle) {
+  std::vector<double> angles_rad;
+  for (int k = 0; k < 20; ++k) angles_rad.push_back(-k * std::numbers::pi / 8.0);
+  EXPECT_EQ(samples_in_last_half_turn(angles_rad), 8u);
+  EXPECT_EQ(samples_in_last_half_turn(std::span(angles_rad).first(8)), 0u);  // 7 pi / 8 only
+  EXPECT_EQ(samples_in_last_half_turn(std::span(angles_rad).first(9)), 8u);
+  EXPECT_EQ(samples_in_last_half_turn({}), 0u);
+}
+
+// A swinging cell: length 8 + 0.5 sin(2 theta), the tracked point turning as above. The mean over
+// the last half turn (one period of the swing) is the oscillation's mean; over five samples, not a
+// whole period, it is off by more than a tenth of the amplitude.
+TEST(ShearObservables, MeanOverTheLastHalfTurnIsTheSwingsMean) {
+  std::vector<double> angles_rad;
+  std::vector<ShearShape> shapes;
+  for (int k = 0; k < 30; ++k) {
+    const double angle = -k * std::numbers::pi / 8.0;
+    angles_rad.push_back(angle);
+    const double length = 8.0 + 0.5 * std::sin(2.0 * angle);
+    const double breadth = 3.0 - 0.2 * std::sin(2.0 * angle);
+    shapes.push_back({length, breadth, (length - breadth) / (length + breadth),
+                      20.0 + 5.0 * std::cos(2.0 * angle)});
+  }
+  const auto window = samples_in_last_half_turn(angles_rad);
+  const auto averaged = average_shapes(std::span(shapes).last(window));
+  EXPECT_NEAR(averaged.mean.length_um, 8.0, 1e-12);
+  EXPECT_NEAR(averaged.mean.breadth_um, 3.0, 1e-12);
+  EXPECT_NEAR(averaged.mean.inclination_deg, 20.0, 1e-12);
+  EXPECT_NEAR(averaged.length_swing_um, 1.0, 1e-12);  // sin(2 theta) reaches +-1 on these phases
+  EXPECT_GT(std::abs(average_shapes(std::span(shapes).last(5)).mean.length_um - 8.0), 0.05);
+  EXPECT_THROW(average_shapes({}), std::invalid_argument);
+}
+
 TEST(ShearObservables, DihedralChangeRms) {
   const std::vector<double> angles{0.1, -0.1, 0.5};
   const std::vector<double> reference{0.0, 0.0, 0.2};

@@ -64,6 +64,13 @@ TEST(CliShear, WritesTheRunDirectoryAndPrintsItsResultAsJson) {
   EXPECT_EQ(table.numbers("length_um")[1], shear["rates"][1]["length_um"].get<double>());
   EXPECT_TRUE(fs::exists(run_dir / "shapes/shear_000.vtp"));
   EXPECT_TRUE(fs::exists(run_dir / "shapes/shear_001.vtp"));
+  // Four samples per unit strain; the last within a sample interval of the end, where the shape is
+  // the final one (no half turn yet, so no window: shear_case_test.cpp).
+  const auto history = rbcsim::io::read_csv_file(run_dir / "rate_001/history.csv");
+  ASSERT_EQ(history.numbers("strain").size(), 4u);
+  EXPECT_EQ(shear["rates"][1]["window_strain"], 0.0);
+  EXPECT_NEAR(history.numbers("length_um").back(), shear["rates"][1]["length_um"].get<double>(),
+              0.01);
   const auto collection = read_text(run_dir / "shear.pvd");
   EXPECT_NE(collection.find("timestep=\"500\""), std::string::npos) << collection;
 }

@@ -77,6 +77,12 @@ void expect_same(const ShearPoint& resumed, const ShearPoint& straight) {
   EXPECT_EQ(resumed.smoothness_rad, straight.smoothness_rad);
   EXPECT_EQ(resumed.roughness_rad, straight.roughness_rad);
   EXPECT_EQ(resumed.tank_treading_hz, straight.tank_treading_hz);
+  ASSERT_EQ(resumed.history.size(), straight.history.size());
+  for (std::size_t i = 0; i < straight.history.size(); ++i) {
+    EXPECT_EQ(resumed.history[i].strain, straight.history[i].strain) << i;
+    EXPECT_EQ(resumed.history[i].shape.length_um, straight.history[i].shape.length_um) << i;
+    EXPECT_EQ(resumed.history[i].shape.breadth_um, straight.history[i].shape.breadth_um) << i;
+  }
 }
 
 TEST(ShearResume, InterruptedSweepResumesToTheStraightSweep) {
@@ -87,6 +93,7 @@ TEST(ShearResume, InterruptedSweepResumesToTheStraightSweep) {
   ASSERT_EQ(straight[1].failure, "");
   ASSERT_GT(straight[1].steps, kShearInterruptStep);
   ASSERT_NE(straight[1].tank_treading_hz, 0.0);
+  ASSERT_GT(straight[1].history.size(), 2u);  // samples before and after the interrupt
 
   // Rate 0 ends; rate 1 is interrupted at kShearInterruptStep and checkpoints there.
   const ScratchDirectory scratch;

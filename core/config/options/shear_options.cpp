@@ -28,17 +28,22 @@ void add_steady_options(OptionTable& table) {
   table
       .add_number("shear.max_strain", "", kShearDefaults.max_strain,
                   "Shear strain (rate x time) after which a rate that is not steady stops and is "
-                  "reported steady: false.")
+                  "reported steady: false. The periodic steady state needs two swinging periods "
+                  "(11-15 strains each for a discocyte at 500-2000 1/s) after the start-up.")
       .above(0.0);
   table
       .add_number("shear.steady_tolerance_per_strain", "",
                   kShearDefaults.steady_tolerance_per_strain,
-                  "Steady when the length and the breadth change by less than this fraction of "
-                  "themselves per unit strain, over three checks in a row.")
+                  "Steady when the means of the length and of the breadth over the last window "
+                  "(the tracked membrane point's last half turn, one swinging period) differ "
+                  "from those over the window before by less than this fraction of themselves "
+                  "per unit strain, at three checks in a row.")
       .above(0.0);
   table
       .add_number("shear.check_interval_strain", "", kShearDefaults.check_interval_strain,
-                  "Strain between two steady-state checks.")
+                  "Strain between two steady-state checks; the shape is sampled four times per "
+                  "check interval (rate_<i>/history.csv), and a window is one check interval at "
+                  "least.")
       .above(0.0);
 }
 
