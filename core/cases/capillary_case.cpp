@@ -295,7 +295,7 @@ void add_stop_criteria(coupling::CoupledSimulation& simulation, const CapillaryR
   simulation.add_stop_criterion(std::make_unique<StopWhen>(
       [passed_x_um](const coupling::CoupledSimulation& s) -> std::optional<std::string> {
         if (centroid_um(s).x() < passed_x_um) return std::nullopt;
-        return "the centroid passed x = " + format_number(passed_x_um) + " um";
+        return "the centroid passed x = " + format_significant(passed_x_um, 6) + " um";
       }));
   const double guard_lu =
       (lattice.outlet_x_um - lattice.grid_um.origin_um.x()) / lattice.grid_um.dx_um -

@@ -179,12 +179,7 @@ void validate_node(const json& node, const std::string& group, std::string_view 
 
 // A size in a diagnostic to 4 significant digits: cell extents are computed from the vertices
 // ("7.82", not "7.819999999983796").
-std::string format_size_um(double size_um) {
-  std::array<char, 32> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), size_um,
-                                    std::chars_format::general, 4);
-  return std::string(buffer.data(), result.ptr) + " um";
-}
+std::string format_size_um(double size_um) { return format_significant(size_um) + " um"; }
 
 }  // namespace
 

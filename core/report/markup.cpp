@@ -136,15 +136,6 @@ std::string escape_markdown(std::string_view text) {
   });
 }
 
-std::string format_significant(double value, int significant_digits) {
-  if (std::isnan(value)) return "nan";
-  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
-  std::array<char, 64> buffer{};
-  const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
-                                    std::chars_format::general, significant_digits);
-  return std::string(buffer.data(), result.ptr);
-}
-
 std::string format_cell(const nlohmann::json& value) {
   if (value.is_null()) return "—";
   if (value.is_boolean()) return value.get<bool>() ? "yes" : "no";

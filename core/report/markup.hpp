@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "common/format.hpp"  // format_significant
+
 namespace rbcsim::report {
 
 // The parts appended into one string. Markup is built with this rather than chains of `+`:
@@ -27,10 +29,6 @@ std::string escape_xml(std::string_view text);
 // Text safe inside a Markdown table cell: one line, Markdown's punctuation backslash-escaped
 // (so no emphasis, link, code span, HTML tag or cell break), invalid UTF-8 replaced as above.
 std::string escape_markdown(std::string_view text);
-
-// `value` with `significant_digits` significant digits in the shortest of fixed or scientific
-// notation ("29.85", "0.001234", "1.234e-19"); "nan", "inf", "-inf" for non-finite values.
-std::string format_significant(double value, int significant_digits = 4);
 
 // A JSON scalar as a table cell: numbers by format_significant (integers exactly), booleans
 // "yes"/"no", strings as they are, null "—", arrays of scalars joined by ", ".
