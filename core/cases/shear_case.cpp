@@ -120,7 +120,7 @@ class ShearRecord final : public coupling::StopCriterion {
     if (steady_checks_ < kSteadyChecksInARow) return std::nullopt;
     steady_ = true;
     return "steady: the mean length and breadth over the last " +
-           format_number(window_strain(window_samples())) + " strain within " +
+           format_significant(window_strain(window_samples())) + " strain within " +
            format_number(setup_.tolerance_per_strain) + " per strain of the window before, " +
            std::to_string(kSteadyChecksInARow) + " checks in a row";
   }
