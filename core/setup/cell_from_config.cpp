@@ -82,7 +82,8 @@ void add_edge_spacing_notice(CellMesh& cell, double spacing_um) {
       " um) is " + format_number(std::round(edge_per_spacing * 100.0) / 100.0) +
       " lattice spacings (lattice.spacing_um = " + format_number(spacing_um) +
       "); with edges of half a spacing the paper's cell fails at the local-area limit in "
-      "sustained flow, with edges of about one spacing it passes (README.md, rbcsim capillary)");
+      "sustained flow at capillary numbers near 1 (it passes at 0.075), with edges of about one "
+      "spacing it passes at both (README.md, rbcsim capillary)");
 }
 
 void require_cell_fits_domain(const mesh::TriangleMesh& cell, const Vec3& domain_extent_um,
