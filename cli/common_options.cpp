@@ -87,7 +87,10 @@ void add_checkpoint_options(CLI::App* command, CheckpointOptions& options, Commo
       ->add_option("--resume", options.resume_directory,
                    "Continue the run in DIR from its checkpoint.bin (same config and options)")
       ->type_name("DIR")
-      ->each([&common](const std::string& directory) { common.output_directory = directory; })
+      ->each([&common](const std::string& directory) {
+        common.output_directory = directory;
+        common.resuming = true;
+      })
       ->excludes(command->get_option("--output"));
 }
 

@@ -21,6 +21,7 @@ struct CommonOptions {
   bool json = false;                       // --json: machine-readable result on stdout
   bool quiet = false;                      // --quiet
   bool verbose = false;                    // --verbose (excludes --quiet)
+  bool resuming = false;                   // --resume given: output_directory holds a run
 };
 
 // --checkpoint-every and --resume, for the commands whose runs are long (the coupled ones):
@@ -40,7 +41,8 @@ struct CheckpointInterval {
 // --checkpoint-every otherwise.
 CheckpointInterval parse_checkpoint_interval(std::string_view text);
 
-// Adds both options; --resume DIR makes DIR the output directory (and excludes --output).
+// Adds both options; --resume DIR makes DIR the output directory (and excludes --output) and sets
+// CommonOptions::resuming.
 void add_checkpoint_options(CLI::App* command, CheckpointOptions& options, CommonOptions& common);
 
 // Only the options that build the configuration, for commands that run nothing (config show).

@@ -9,9 +9,11 @@
 #include <span>
 
 #include "common/errors.hpp"
+#include "config/config_sources.hpp"
 #include "coupling/checkpoint.hpp"
 #include "io/atomic_file.hpp"
 #include "io/sha256.hpp"
+#include "io/text_file.hpp"
 
 namespace rbcsim::cli {
 namespace {
@@ -24,6 +26,20 @@ std::string utc_text(std::chrono::system_clock::time_point time, const char* for
   std::array<char, 32> text{};
   const auto length = std::strftime(text.data(), text.size(), format, &utc);
   return std::string(text.data(), length);
+}
+
+// The wall time of the interrupted run in `directory` (its result.json; 0 without one, or if it
+// was not interrupted).
+double interrupted_wall_time_s(const std::filesystem::path& directory) {
+  const auto file = directory / "result.json";
+  if (!std::filesystem::exists(file)) return 0.0;
+  const auto result = config::parse_json(io::read_text_file(file), file.string());
+  if (result.value("status", std::string()) != "interrupted") return 0.0;
+  const auto wall = result.find("wall_time_s");
+  if (wall == result.end() || !wall->is_number()) {
+    throw InputError(file.string(), "an interrupted run's result without a number wall_time_s");
+  }
+  return wall->get<double>();
 }
 
 int apply_threads(int requested) {
@@ -52,6 +68,7 @@ RunDirectory::RunDirectory(std::string command, const CommonOptions& options,
               ? options.output_directory
               : std::filesystem::path("runs") /
                     (command_ + "-" + morphology_ + "-" + utc_text(now, "%Y%m%dT%H%M%SZ"));
+  if (options.resuming) wall_time_before_resume_s_ = interrupted_wall_time_s(path_);
 }
 
 double RunDirectory::elapsed_s() const {
@@ -81,8 +98,16 @@ nlohmann::ordered_json RunDirectory::result_head(bool ok) const {
 }
 
 nlohmann::ordered_json RunDirectory::result_head_with_status(std::string_view status) const {
-  return {{"command", command_}, {"version", RBCSIM_VERSION},  {"morphology", morphology_},
-          {"status", status},    {"wall_time_s", elapsed_s()}, {"threads", threads_}};
+  nlohmann::ordered_json head = {{"command", command_},
+                                 {"version", RBCSIM_VERSION},
+                                 {"morphology", morphology_},
+                                 {"status", status},
+                                 {"wall_time_s", wall_time_before_resume_s_ + elapsed_s()},
+                                 {"threads", threads_}};
+  if (wall_time_before_resume_s_ > 0.0) {
+    head["wall_time_before_resume_s"] = wall_time_before_resume_s_;
+  }
+  return head;
 }
 
 void RunDirectory::write_json(const std::string& file_name,

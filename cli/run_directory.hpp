@@ -3,8 +3,10 @@
 //   config.json  the resolved config with its "derived" values, plus a "run" object: command,
 //                version, mesh_source, mesh_sha256, threads, started_utc, notices;
 //   result.json  command, version, morphology, status ("ok" | "failed" | "interrupted"),
-//   wall_time_s, threads,
-//                headline, files, and the command's own object (schemas/result.schema.json);
+//                wall_time_s, threads, headline, files, and the command's own object
+//                (schemas/result.schema.json). A resumed run's wall_time_s adds the time of the
+//                interrupted run it continues (wall_time_before_resume_s: that run's
+//                result.json, itself cumulative); a run killed without writing one adds nothing;
 //   CSV tables and ParaView files of the command.
 // Every file is written atomically (io/atomic_file.hpp).
 #pragma once
@@ -30,12 +32,13 @@ std::string mesh_sha256(const mesh::TriangleMesh& mesh);
 class RunDirectory {
  public:
   // Applies --threads (OpenMP) and notes the start time. The directory is --output, or
-  // runs/<command>-<morphology>-<UTC timestamp> below the working directory.
+  // runs/<command>-<morphology>-<UTC timestamp> below the working directory. With --resume, reads
+  // the wall time of the interrupted run from its result.json (InputError if unreadable).
   RunDirectory(std::string command, const CommonOptions& options, const config::Config& config);
 
   const std::filesystem::path& path() const { return path_; }
   int threads() const { return threads_; }
-  double elapsed_s() const;
+  double elapsed_s() const;  // of this process's run
 
   // Creates the directory (InputError if that fails), writes config.json and tells the cell's
   // run notices (stderr, and config.json's "run" object).
@@ -54,6 +57,7 @@ class RunDirectory {
   int threads_ = 1;
   std::string started_utc_;
   std::chrono::steady_clock::time_point started_;
+  double wall_time_before_resume_s_ = 0.0;
 };
 
 // The checkpoints of a coupled run (coupling/checkpoint.hpp): sets the simulation's policy

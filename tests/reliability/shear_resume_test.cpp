@@ -190,6 +190,33 @@ TEST(ShearResume, SigintWritesTheRatesDoneSoFarAndACheckpoint) {
   EXPECT_TRUE(std::filesystem::exists(run_dir / "shear.csv"));
 }
 
+// Interrupted in its first rate and resumed, the run's wall_time_s adds the interrupted run's
+// (wall_time_before_resume_s, read from the result.json it left).
+TEST(ShearResume, ResumedRunCountsTheWallTimeOfTheInterruptedOne) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const std::string settings =
+      " --quiet --threads 1 --rates 0,500 --max-strain 1 --set mesh.subdivisions=3"
+      " --set lattice.spacing_um=1 --set shear.max_reynolds_number=0.4"
+      " --set shear.width_diameters=1.6 --set shear.gap_diameters=2";
+  ASSERT_EQ(rbcsim::testing::run_rbcsim_signalled_once(
+                run_dir / shear_rate_directory(0),
+                "shear --output '" + run_dir.string() + "'" + settings),
+            130);
+  const auto interrupted = rbcsim::testing::read_json(run_dir / "result.json");
+  ASSERT_EQ(interrupted["status"], "interrupted");
+  EXPECT_FALSE(interrupted.contains("wall_time_before_resume_s"));
+  const double interrupted_s = interrupted["wall_time_s"].get<double>();
+
+  const auto resumed_run = rbcsim::testing::run_rbcsim(
+      "shear --resume '" + run_dir.string() + "'" + settings, scratch.path());
+  ASSERT_EQ(resumed_run.exit_code, 0) << resumed_run.err;
+  const auto resumed = rbcsim::testing::read_json(run_dir / "result.json");
+  EXPECT_EQ(resumed["status"], "ok");
+  EXPECT_EQ(resumed["wall_time_before_resume_s"].get<double>(), interrupted_s);
+  EXPECT_GT(resumed["wall_time_s"].get<double>(), interrupted_s);
+}
+
 TEST(ShearResume, APointOfAnotherConfigIsBadInput) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
