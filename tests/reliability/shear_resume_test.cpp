@@ -60,6 +60,12 @@ struct CoarseSweep {
   }
 };
 
+// The coarse sweep's setting through the binary (the rates and strain added per test).
+constexpr const char* kCoarseBinarySettings =
+    " --quiet --threads 1 --set mesh.subdivisions=3 --set lattice.spacing_um=1"
+    " --set shear.max_reynolds_number=0.4 --set shear.width_diameters=1.6"
+    " --set shear.gap_diameters=2";
+
 std::filesystem::path checkpoint_of(const ScratchDirectory& scratch, std::size_t rate_index) {
   return scratch.path() / (shear_rate_directory(rate_index) + ".bin");
 }
@@ -141,10 +147,7 @@ TEST(ShearResume, InterruptedSweepResumesToTheStraightSweep) {
 // checkpoint is at step 219, odd).
 TEST(ShearResume, ResumeThroughTheBinaryKeepsFinishedRatesAndRewritesTheSameResults) {
   const ScratchDirectory scratch;
-  const std::string settings =
-      " --quiet --threads 1 --rates 0,500 --max-strain 1 --set mesh.subdivisions=3"
-      " --set lattice.spacing_um=1 --set shear.max_reynolds_number=0.4"
-      " --set shear.width_diameters=1.6 --set shear.gap_diameters=2";
+  const std::string settings = std::string(" --rates 0,500 --max-strain 1") + kCoarseBinarySettings;
   const auto run_dir = scratch.path() / "run";
   const auto straight = rbcsim::testing::run_rbcsim(
       "shear --checkpoint-every 73 --output '" + run_dir.string() + "'" + settings, scratch.path());
@@ -175,11 +178,9 @@ TEST(ShearResume, SigintWritesTheRatesDoneSoFarAndACheckpoint) {
   const auto run_dir = scratch.path() / "run";
   EXPECT_EQ(rbcsim::testing::run_rbcsim_signalled_once(
                 run_dir / shear_rate_directory(0),
-                "shear --quiet --threads 1 --rates 100 --max-strain 1000 --set mesh.subdivisions=3"
-                " --set shear.steady_tolerance_per_strain=1e-12"
-                " --set lattice.spacing_um=1 --set shear.max_reynolds_number=0.4"
-                " --set shear.width_diameters=1.6 --set shear.gap_diameters=2 --output '" +
-                    run_dir.string() + "'"),
+                std::string("shear --rates 100 --max-strain 1000") +
+                    " --set shear.steady_tolerance_per_strain=1e-12" + kCoarseBinarySettings +
+                    " --output '" + run_dir.string() + "'"),
             130);
   const auto result = rbcsim::testing::read_json(run_dir / "result.json");
   EXPECT_EQ(result["status"], "interrupted");
@@ -195,10 +196,7 @@ TEST(ShearResume, SigintWritesTheRatesDoneSoFarAndACheckpoint) {
 TEST(ShearResume, ResumedRunCountsTheWallTimeOfTheInterruptedOne) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
-  const std::string settings =
-      " --quiet --threads 1 --rates 0,500 --max-strain 1 --set mesh.subdivisions=3"
-      " --set lattice.spacing_um=1 --set shear.max_reynolds_number=0.4"
-      " --set shear.width_diameters=1.6 --set shear.gap_diameters=2";
+  const std::string settings = std::string(" --rates 0,500 --max-strain 1") + kCoarseBinarySettings;
   ASSERT_EQ(rbcsim::testing::run_rbcsim_signalled_once(
                 run_dir / shear_rate_directory(0),
                 "shear --output '" + run_dir.string() + "'" + settings),
@@ -220,10 +218,7 @@ TEST(ShearResume, ResumedRunCountsTheWallTimeOfTheInterruptedOne) {
 TEST(ShearResume, APointOfAnotherConfigIsBadInput) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
-  const std::string settings =
-      " --quiet --threads 1 --rates 0 --max-strain 0.2 --set mesh.subdivisions=3"
-      " --set lattice.spacing_um=1 --set shear.max_reynolds_number=0.4"
-      " --set shear.width_diameters=1.6 --set shear.gap_diameters=2";
+  const std::string settings = std::string(" --rates 0 --max-strain 0.2") + kCoarseBinarySettings;
   ASSERT_EQ(rbcsim::testing::run_rbcsim("shear --output '" + run_dir.string() + "'" + settings,
                                         scratch.path())
                 .exit_code,
