@@ -419,7 +419,10 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
     point.shape = measure_shear_shape(positions_um);
   }
   measure_surface(model, positions_um, point);
-  point.tank_treading_hz = record.frequency_hz() / plan.viscosity_scale;
+  // At rate 0 nothing turns: the tracked vertex's drift at rest would give a frequency of
+  // round-off size (1e-34 Hz), not a rotation.
+  point.tank_treading_hz =
+      plan.shear_rate_per_s > 0.0 ? record.frequency_hz() / plan.viscosity_scale : 0.0;
   point.history = record.history();
   point.steps = simulation.time_step();
   point.strain = simulation.time_s() * time_unit_rate;

@@ -168,6 +168,8 @@ TEST(ShearRun, RestKeepsTheDiameterAndShearStretches) {
   for (const auto& point : points) EXPECT_EQ(point.failure, "");
   EXPECT_NEAR(points[0].shape.length_um, diameter_um, 0.01 * diameter_um);
   EXPECT_TRUE(points[0].steady) << points[0].stop_reason;
+  EXPECT_EQ(points[0].tank_treading_hz, 0.0);
+  EXPECT_GT(points[1].tank_treading_hz, 0.0);
   EXPECT_LT(points[0].smoothness_rad, 0.01);
   EXPECT_LT(points[0].roughness_rad, points[0].smoothness_rad);
   EXPECT_GT(points[1].shape.length_um, 1.03 * diameter_um);
