@@ -78,6 +78,8 @@ StretchComparison compare_with_reference(std::span<const StretchPoint> simulated
     comparison.axial_inside_error_bar += axial_inside ? 1 : 0;
     comparison.transverse_inside_error_bar += transverse_inside ? 1 : 0;
     comparison.inside_error_bars += axial_inside && transverse_inside ? 1 : 0;
+    comparison.misfit += measured.axial.misfit(diameters->axial_um) +
+                         measured.transverse.misfit(diameters->transverse_um);
   }
   if (comparison.point_count > 0) {
     const auto count = static_cast<double>(comparison.point_count);

@@ -24,6 +24,14 @@ struct MeasuredDiameter {
   double bar_low_um = 0.0;
   double bar_high_um = 0.0;
   bool contains(double value_um) const { return bar_low_um <= value_um && value_um <= bar_high_um; }
+  // (value - mean)^2 over the square of the bar's half on value's side: under 1 exactly when
+  // value is inside the bar (the bars are not centred on the means).
+  double misfit(double value_um) const {
+    if (value_um == mean_um) return 0.0;  // also where a bar ends at its mean
+    const double half_bar_um = value_um < mean_um ? mean_um - bar_low_um : bar_high_um - mean_um;
+    const double deviation = (value_um - mean_um) / half_bar_um;
+    return deviation * deviation;
+  }
 };
 
 struct StretchReferencePoint {
@@ -43,6 +51,9 @@ struct StretchComparison {
   std::size_t inside_error_bars = 0;  // forces with both diameters inside their bars
   std::size_t axial_inside_error_bar = 0;
   std::size_t transverse_inside_error_bar = 0;
+  // Sum of MeasuredDiameter::misfit over the forces compared and both diameters: a chi-square
+  // with the error bars as standard deviations, what the calibrate stretch fit minimises.
+  double misfit = 0.0;
 };
 
 StretchComparison compare_with_reference(std::span<const StretchPoint> simulated,

@@ -49,6 +49,20 @@ TEST(StretchComparison, InterpolatesBetweenSimulatedForces) {
   EXPECT_EQ(comparison.axial_inside_error_bar, 2u);  // 8.6 > 8.5 at 0 pN
   EXPECT_EQ(comparison.transverse_inside_error_bar, 3u);
   EXPECT_EQ(comparison.inside_error_bars, 2u);
+  // In units of the bars' upper halves 0.5, 1, 1 um: 1.2^2 + 0.6^2 + 0.6^2.
+  EXPECT_NEAR(comparison.misfit, 2.16, 1e-12);
+}
+
+// A bar from 9 to 12 around 10: deviations count in the half of the bar on their side, so both
+// ends have misfit 1, and a value inside has less.
+TEST(StretchComparison, MisfitMeasuresDeviationsInTheHalfBarOnTheirSide) {
+  const cases::MeasuredDiameter measured{10.0, 9.0, 12.0};
+  EXPECT_DOUBLE_EQ(measured.misfit(9.0), 1.0);
+  EXPECT_DOUBLE_EQ(measured.misfit(12.0), 1.0);
+  EXPECT_DOUBLE_EQ(measured.misfit(9.5), 0.25);
+  EXPECT_DOUBLE_EQ(measured.misfit(10.5), 0.0625);
+  EXPECT_DOUBLE_EQ(measured.misfit(14.0), 4.0);
+  EXPECT_DOUBLE_EQ(measured.misfit(10.0), 0.0);
 }
 
 TEST(StretchComparison, NeverExtrapolatesAndIgnoresUnconvergedPoints) {
