@@ -14,6 +14,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common_options.hpp"
+#include "io/csv_table.hpp"
 #include "run_directory.hpp"
 #include "setup/calibrate_from_config.hpp"
 #include "setup/membrane_from_config.hpp"
@@ -94,7 +95,8 @@ nlohmann::ordered_json headline(const cases::Calibration& calibration) {
 }
 
 // One block per patch test: quantity, rbcsim's value, the paper's.
-void print_table(const nlohmann::ordered_json& result, const RunDirectory& directory) {
+void print_table(const nlohmann::ordered_json& result, const cases::Calibration& calibration,
+                 const RunDirectory& directory) {
   const auto& section = result["calibrate"];
   const auto& paper = section["paper"];
   std::printf("calibrate, %s (membrane distribution and kernel as configured)\n",
@@ -112,14 +114,44 @@ void print_table(const nlohmann::ordered_json& result, const RunDirectory& direc
                   paper_value.c_str());
     }
   }
+  if (calibration.stretch) {
+    const auto& contact = calibration.settings.stretch_fit.stretch.contact;
+    std::printf(
+        "\nstretch fit: %zu curves (stretch_fit.csv) against Mills et al. 2004, contact %s, "
+        "%s\n",
+        calibration.stretch->curve.evaluations.size(), contact.rule.c_str(),
+        contact.rigid ? "rigid" : "free");
+  }
   std::printf("\nfitted parameters: %s\nwall time %.2f s, %d thread(s); run directory %s\n",
               (directory.path() / "parameters.json").c_str(), directory.elapsed_s(),
               directory.threads(), directory.path().c_str());
 }
 
+// Every curve the stretch fit ran, in order: how the search went (a failed curve's misfit is inf).
+void write_stretch_fit_table(const RunDirectory& directory, const cases::StretchFit& fit) {
+  std::vector<std::vector<double>> rows;
+  for (const auto& curve : fit.evaluations) {
+    const auto& comparison = curve.comparison;
+    rows.push_back({curve.k_link_kBT, curve.misfit, comparison.rms_axial_um.value_or(0.0),
+                    comparison.rms_transverse_um.value_or(0.0),
+                    static_cast<double>(comparison.inside_error_bars), curve.wall_time_s});
+  }
+  const std::vector<std::string> columns = {"k_link_kBT",        "misfit",
+                                            "rms_axial_um",      "rms_transverse_um",
+                                            "inside_error_bars", "wall_time_s"};
+  io::write_csv_file(directory.path() / "stretch_fit.csv", columns, rows);
+}
+
 void run_calibrate_command(const CalibrateOptions& options) {
   const auto config = resolve_calibrate_config(options);
-  const auto settings = setup::calibration_settings_from(config);
+  auto settings = setup::calibration_settings_from(config);
+  const Progress progress(options.common);
+  settings.stretch_fit.on_evaluation = [&progress](const cases::StretchFitEvaluation& curve) {
+    progress.update("calibrate: stretch fit, k_link " + format_significant(curve.k_link_kBT) +
+                    " kBT: misfit " +
+                    (curve.failure.empty() ? format_significant(curve.misfit) : "failed") + ", " +
+                    format_significant(curve.wall_time_s, 3) + " s");
+  };
   const auto parameters = setup::membrane_parameters_from(config);
   const auto cell_mesh = setup::cell_mesh_from(config);
   for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
@@ -132,18 +164,21 @@ void run_calibrate_command(const CalibrateOptions& options) {
   const RunDirectory directory("calibrate", common, config);
   // Bad targets are input errors: found before the run directory exists.
   const auto calibration = cases::run_calibration(cell_mesh.mesh, parameters, settings);
+  progress.done();
   directory.start(config, cell_mesh);
   directory.write_json("parameters.json", cases::fitted_parameters_document(calibration));
+  if (calibration.stretch) write_stretch_fit_table(directory, calibration.stretch->curve);
   auto result = directory.result_head(true);
   result["headline"] = headline(calibration);
   result["files"] = {{"config", "config.json"}, {"parameters", "parameters.json"}};
+  if (calibration.stretch) result["files"]["stretch_fit"] = "stretch_fit.csv";
   result["calibrate"] = cases::calibrate_result_section(calibration);
   directory.write_json("result.json", result);
 
   if (options.common.json) {
     std::cout << result.dump(2) << '\n';
   } else if (!options.common.quiet) {
-    print_table(result, directory);
+    print_table(result, calibration, directory);
   }
 }
 
@@ -152,10 +187,12 @@ void attach_calibrate(CLI::App& application) {
   auto* command = application.add_subcommand(
       "calibrate",
       "Patch tests: moduli of the membrane's k parameters (hexagonal and two-triangle patches, "
-      "the cell's overall bending) and the k fitted to target moduli, as a config file");
+      "the cell's overall bending) and the k fitted to target moduli or to the stretch curve of "
+      "Mills et al. 2004, as a config file");
   command
       ->add_option("--fits", options->fits,
-                   "Fits to run, comma-separated: link_area, bend, curvature_terms (default all)")
+                   "Fits to run, comma-separated: link_area, bend, curvature_terms (the default), "
+                   "stretch (k_link to Mills et al. 2004 under stretch.contact.*; minutes)")
       ->type_name("LIST");
   command
       ->add_option("--target-shear-modulus", options->shear_uN_per_m,

@@ -13,7 +13,11 @@
 //                     since the small-strain moduli are linear in k;
 //   bend              k_b to a target D: linear;
 //   curvature_terms   k_ad, k_c (at a fixed ratio k_ad / k_c) to a target overall modulus: linear.
-// Each fit is then checked by measuring again with the fitted k: the residual is reported.
+//   stretch           k_l to a measured optical-tweezers curve (stretch_fit.hpp: Mills et al.
+//                     2004, quasi-static stretches, minutes at the paper's resolution); not run
+//                     unless asked for. It replaces a k_l fitted by link_area.
+// Each fit is then checked by measuring again with the fitted k: the residual is reported (for
+// the stretch fit, the curve's deviations from the measurement and the moduli of its k_l).
 #pragma once
 
 #include <nlohmann/json.hpp>
@@ -23,6 +27,7 @@
 
 #include "cases/bending_patches.hpp"
 #include "cases/hexagonal_patch.hpp"
+#include "cases/stretch_fit.hpp"
 #include "membrane/parameters.hpp"
 #include "mesh/triangle_mesh.hpp"
 
@@ -56,6 +61,7 @@ struct CalibrationTargets {
 };
 
 struct CalibrationSettings {
+  // The patch-test fits, fractions of a second; the stretch fit (minutes) only when asked for.
   std::vector<std::string> fits = {"link_area", "bend", "curvature_terms"};
   // The patches' rest edge a: "mesh-mean-edge" (the cell mesh's mean edge: the k are
   // mesh-dependent, so calibrate for the mesh that will run) or "force-length-scale" (Table 2's
@@ -65,6 +71,7 @@ struct CalibrationSettings {
   double angle_rad = 1e-3;  // fold of the two-triangle patch, uniform perturbation of the cell
   double area_difference_per_total_curvature = 3.0;  // k_ad / k_c (the paper's 300 / 100)
   CalibrationTargets targets;
+  StretchFitSettings stretch_fit;  // the stretch fit's set-up and reference curve
 };
 
 std::vector<std::string> calibration_fit_names();
@@ -86,6 +93,11 @@ struct StiffnessFit {
   double relative_residual = 0.0;
 };
 
+struct StretchCurveFit {
+  StretchFit curve;         // the fitted k_l, its curve against the reference, every curve run
+  MembraneModuli achieved;  // the hexagonal patch's moduli with the fitted k_l
+};
+
 struct Calibration {
   CalibrationSettings settings;
   double patch_edge_um = 0.0;
@@ -101,6 +113,7 @@ struct Calibration {
   std::optional<LinkAreaFit> link_area;
   std::optional<StiffnessFit> bend;
   std::optional<StiffnessFit> curvature_terms;
+  std::optional<StretchCurveFit> stretch;
   membrane::MembraneParameters fitted;  // the configured parameters with the fitted k
 };
 
@@ -111,9 +124,12 @@ Calibration run_calibration(const mesh::TriangleMesh& cell,
                             const CalibrationSettings& settings);
 
 // {"hexagonal", "hexagonal_fit", "two_triangle", "two_triangle_fit", "overall_bending",
-//  "overall_bending_fit", "paper"} (schemas/result.schema.json); the fits only when run.
+//  "overall_bending_fit", "stretch_fit", "paper"} (schemas/result.schema.json); the fits only when
+// run.
 nlohmann::ordered_json calibrate_result_section(const Calibration& calibration);
-// {"membrane": {the fitted k}}: a config file that --config accepts.
+// {"membrane": {the fitted k}}: a config file that --config accepts. After a stretch fit also
+// {"stretch": {"contact": ...}}, the contact the k_l was fitted under: `rbcsim stretch --config`
+// with this file then runs the fitted curve.
 nlohmann::ordered_json fitted_parameters_document(const Calibration& calibration);
 
 }  // namespace rbcsim::cases

@@ -1,5 +1,7 @@
 #include "setup/calibrate_from_config.hpp"
 
+#include "setup/stretch_from_config.hpp"
+
 namespace rbcsim::setup {
 
 cases::CalibrationSettings calibration_settings_from(const config::Config& config) {
@@ -18,6 +20,12 @@ cases::CalibrationSettings calibration_settings_from(const config::Config& confi
   targets.poisson_ratio = config.number("calibrate.target.poisson_ratio");
   targets.bending_modulus_J = config.number("calibrate.target.bending_modulus_J");
   targets.overall_bending_modulus_J = config.number("calibrate.target.overall_bending_modulus_J");
+  // The stretch fit runs the stretch as configured (stretch.contact.*, stretch.quasi_static.*)
+  // against Mills et al. (2004).
+  auto& stretch_fit = settings.stretch_fit;
+  stretch_fit.stretch = stretch_settings_from(config);
+  stretch_fit.reference = mills2004_stretch_reference();
+  stretch_fit.relative_tolerance = config.number("calibrate.stretch_fit.relative_tolerance");
   return settings;
 }
 

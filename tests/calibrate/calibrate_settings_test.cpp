@@ -30,7 +30,9 @@ TEST(CalibrateSettings, EveryOptionReachesItsField) {
            "calibrate.target.area_modulus_uN_per_m=15",
            "calibrate.target.young_modulus_uN_per_m=20", "calibrate.target.poisson_ratio=0.4",
            "calibrate.target.bending_modulus_J=1e-19",
-           "calibrate.target.overall_bending_modulus_J=3e-19"}}));
+           "calibrate.target.overall_bending_modulus_J=3e-19",
+           "calibrate.stretch_fit.relative_tolerance=0.05", "stretch.contact.rigid=true",
+           "stretch.forces_pN=0:40:20"}}));
   EXPECT_EQ(settings.fits, std::vector<std::string>{"bend"});
   EXPECT_EQ(settings.patch_edge, "force-length-scale");
   EXPECT_EQ(settings.strain, 0.002);
@@ -44,6 +46,12 @@ TEST(CalibrateSettings, EveryOptionReachesItsField) {
   EXPECT_EQ(targets.poisson_ratio, 0.4);
   EXPECT_EQ(targets.bending_modulus_J, 1e-19);
   EXPECT_EQ(targets.overall_bending_modulus_J, 3e-19);
+  // The stretch fit: its tolerance, the stretch as configured, Mills et al.'s 13 forces.
+  const auto& stretch_fit = settings.stretch_fit;
+  EXPECT_EQ(stretch_fit.relative_tolerance, 0.05);
+  EXPECT_TRUE(stretch_fit.stretch.contact.rigid);
+  EXPECT_EQ(stretch_fit.stretch.forces_pN, (std::vector<double>{0.0, 20.0, 40.0}));
+  EXPECT_EQ(stretch_fit.reference.size(), 13u);
 }
 
 TEST(CalibrateSettings, OutOfRangeAndUnknownValuesAreInputErrors) {

@@ -2,10 +2,12 @@
 // against its schema, parameters.json fed back through --config, and bad input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "io/csv_table.hpp"
 #include "support/json_schema_check.hpp"
 #include "support/relative_difference.hpp"
 #include "support/run_rbcsim.hpp"
@@ -60,6 +62,43 @@ TEST(CliCalibrate, WritesARunDirectoryWhoseParametersReachTheTargets) {
   EXPECT_FALSE(measured.contains("hexagonal_fit"));
 }
 
+// The stretch fit on the coarse cell over Mills' first four forces (a second): its result against
+// the schema, the curves it ran, and parameters.json, which carries the fitted k_link and the
+// contact it was fitted under, so `rbcsim stretch --config` with it runs the fitted curve.
+TEST(CliCalibrate, StretchFitWritesParametersThatRunTheFittedCurve) {
+  const ScratchDirectory scratch;
+  const std::string setting = std::string(kCoarseCell) +
+                              "--set stretch.forces_pN=0,15.987,19.338,30.754 --threads 1 --json ";
+  const auto fit_dir = scratch.path() / "fit";
+  const auto fit = run_rbcsim("calibrate --fits stretch --set stretch.contact.rigid=true " +
+                                  setting + "--output '" + fit_dir.string() + "'",
+                              scratch.path());
+  ASSERT_EQ(fit.exit_code, 0) << fit.err;
+  const auto printed = nlohmann::json::parse(fit.out);
+  const auto schema = read_json(fs::path(RBCSIM_SOURCE_DIR) / "schemas/result.schema.json");
+  EXPECT_EQ(rbcsim::testing::schema_problems(printed, schema), std::vector<std::string>{});
+  const auto& stretch_fit = printed["calibrate"]["stretch_fit"];
+  EXPECT_EQ(stretch_fit["start_k_link_kBT"], 7.0);
+  EXPECT_EQ(stretch_fit["reference_forces"], 4);
+  EXPECT_EQ(printed["files"]["stretch_fit"], "stretch_fit.csv");
+  const auto curves = rbcsim::io::read_csv_file(fit_dir / "stretch_fit.csv");
+  EXPECT_EQ(curves.numbers("k_link_kBT").size(), stretch_fit["curves"].get<std::size_t>());
+  const auto misfits = curves.numbers("misfit");
+  EXPECT_EQ(*std::min_element(misfits.begin(), misfits.end()), stretch_fit["misfit"].get<double>());
+
+  const auto parameters = read_json(fit_dir / "parameters.json");
+  EXPECT_EQ(parameters["membrane"], nlohmann::json({{"k_link_kBT", stretch_fit["k_link_kBT"]}}));
+  EXPECT_EQ(parameters["stretch"]["contact"]["rigid"], true);
+  const auto stretch =
+      run_rbcsim("stretch --config '" + (fit_dir / "parameters.json").string() + "' " + setting +
+                     "--output '" + (scratch.path() / "stretch").string() + "'",
+                 scratch.path());
+  ASSERT_EQ(stretch.exit_code, 0) << stretch.err;
+  const auto comparison = nlohmann::json::parse(stretch.out)["stretch"]["comparison"];
+  EXPECT_EQ(comparison["rms_axial_um"], stretch_fit["rms_axial_um"]);
+  EXPECT_EQ(comparison["rms_transverse_um"], stretch_fit["rms_transverse_um"]);
+}
+
 TEST(CliCalibrate, UnreachableTargetIsBadInputAndWritesNothing) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
@@ -79,6 +118,13 @@ TEST(CliCalibrate, UnreachableTargetIsBadInputAndWritesNothing) {
   EXPECT_EQ(unknown_fit.exit_code, 2);
   EXPECT_NE(unknown_fit.err.find("--fits: unknown fit \"stiffness\""), std::string::npos)
       << unknown_fit.err;
+  const auto unloaded = run_rbcsim(
+      "calibrate --fits stretch --set stretch.forces_pN=0,10 --output '" + run_dir.string() + "'",
+      scratch.path());
+  EXPECT_EQ(unloaded.exit_code, 2);
+  EXPECT_NE(unloaded.err.find("stretch.forces_pN: the stretch fit needs forces"), std::string::npos)
+      << unloaded.err;
+  EXPECT_FALSE(fs::exists(run_dir));
 }
 
 }  // namespace

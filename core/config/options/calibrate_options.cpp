@@ -50,7 +50,9 @@ void add_calibrate_options(OptionTable& table) {
   table.add_choice_list("calibrate.fits", cases::calibration_fit_names(), kCalibrateDefaults.fits,
                         "Fits to run: link_area (k_link, k_area to the in-plane targets), bend "
                         "(k_bend to D), curvature_terms (k_area_difference, k_total_curvature to "
-                        "the overall bending modulus).");
+                        "the overall bending modulus), stretch (k_link to the optical-tweezers "
+                        "curve of Mills et al. 2004 with stretch.contact.* and "
+                        "stretch.quasi_static.*; minutes, not run by default).");
   table.add_choice("calibrate.patch_edge", cases::patch_edge_rule_names(),
                    kCalibrateDefaults.patch_edge,
                    "Rest edge of the patches: the cell mesh's mean edge (the k are "
@@ -71,6 +73,12 @@ void add_calibrate_options(OptionTable& table) {
                   "Ratio k_area_difference / k_total_curvature kept by the curvature_terms fit "
                   "(the paper's 300 / 100).")
       .above(0.0);
+  table
+      .add_number("calibrate.stretch_fit.relative_tolerance", "",
+                  kCalibrateDefaults.stretch_fit.relative_tolerance,
+                  "The stretch fit's k_link is known to within this fraction.")
+      .above(0.0)
+      .at_most(0.1);
   add_target_options(table);
 }
 
