@@ -1,5 +1,7 @@
 // Optical-tweezers stretching (DESIGN.md §4 stretch): axial and transverse diameters against
 // force for every run, over the Mills et al. (2004) measurements with their error bars.
+#include "common/format.hpp"
+#include "membrane/parameters.hpp"
 #include "report/reference_data.hpp"
 #include "report/sections.hpp"
 #include "report/svg_plot.hpp"
@@ -38,8 +40,22 @@ std::vector<svg::Series> mills_series() {
       {"Mills et al. 2004, transverse", diameters.transverse, colour, svg::Marker::square, false}};
 }
 
+// "discocyte, all six, quasi-static", then what departs from the default set-up (Table 2's
+// k_link, free contact patches), e.g. the parameters of calibrate's stretch fit: ", k_link 3.28
+// kBT, rigid patches". Config files of older versions may lack the members: they are optional.
 std::string run_description(const RunDirectory& run) {
-  return morphology_and_terms(run) + ", " + run.section().at("mode").string();
+  auto description = morphology_and_terms(run) + ", " + run.section().at("mode").string();
+  const auto config = run.config_field();
+  const auto membrane = config.find("membrane");
+  const auto k_link = membrane ? membrane->find("k_link_kBT") : std::nullopt;
+  if (k_link && k_link->number() != membrane::MembraneParameters{}.k_link_kBT) {
+    description += ", k_link " + format_significant(k_link->number(), 3) + " kBT";
+  }
+  const auto stretch = config.find("stretch");
+  const auto contact = stretch ? stretch->find("contact") : std::nullopt;
+  const auto rigid = contact ? contact->find("rigid") : std::nullopt;
+  if (rigid && rigid->boolean()) description += ", rigid patches";
+  return description;
 }
 
 }  // namespace

@@ -5,9 +5,9 @@
 #include "common/errors.hpp"
 #include "report/report.hpp"
 #include "report/run_fixtures.hpp"
-#include "support/xml_document.hpp"
 #include "support/run_rbcsim.hpp"
 #include "support/scratch_directory.hpp"
+#include "support/xml_document.hpp"
 
 namespace {
 
@@ -105,6 +105,29 @@ TEST(ReportInputs, RunsThatWouldShareALabelAreToldApartByDirectory) {
   ASSERT_EQ(series.size(), 6u);
   EXPECT_EQ(series[0], "discocyte, all six, quasi-static (" + first.generic_string() + "), axial");
   EXPECT_EQ(series[2], "discocyte, all six, quasi-static (" + second.generic_string() + "), axial");
+}
+
+// A stretch with calibrate's fitted k_link and glued beads says so: it is a different set-up from
+// the default one beside it, not a copy to be told apart by directory.
+TEST(ReportInputs, StretchLabelsNameAFittedLinkStiffnessAndRigidPatches) {
+  rbcsim::testing::ScratchDirectory scratch;
+  const auto table2 = rbcsim::testing::stretch_run(rbcsim::testing::all_terms(), 90, 0.3);
+  auto fitted = table2;
+  fitted.config_patch = {{"membrane", {{"k_link_kBT", 3.280659}}},
+                         {"stretch", {{"contact", {{"rigid", true}}}}}};
+  const auto page =
+      parse_xml(build_report(read_run_directories({write_run(scratch.path() / "table2", table2),
+                                                   write_run(scratch.path() / "fitted", fitted)}))
+                    .html);
+  std::vector<std::string> series;
+  for (const auto i : page.find("g", "series"))
+    series.push_back(page.elements[i].attribute("data-label"));
+  ASSERT_EQ(series.size(), 6u);
+  for (const std::string label : {"discocyte, all six, quasi-static, axial",
+                                  "discocyte, all six, quasi-static, k_link 3.28 kBT, rigid "
+                                  "patches, axial"}) {
+    EXPECT_NE(std::find(series.begin(), series.end(), label), series.end()) << label;
+  }
 }
 
 TEST(ReportInputs, TransitOrderDifferentFromThePaperIsSaid) {

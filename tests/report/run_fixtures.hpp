@@ -37,6 +37,8 @@ struct FixtureRun {
   double wall_time_s = 2.5;
   int threads = 2;
   std::string time_series_csv = {};  // capillary_timeseries.csv when not empty
+  // Merged into config.json (RFC 7386 merge patch), e.g. {"membrane": {"k_link_kBT": 3}}.
+  nlohmann::json config_patch = nlohmann::json::object();
 };
 
 inline void write_file(const std::filesystem::path& file, const std::string& text) {
@@ -50,6 +52,7 @@ inline std::filesystem::path write_run(const std::filesystem::path& directory,
   auto configuration = resolved;
   configuration["morphology"] = run.morphology;
   configuration["membrane"]["forces"] = run.forces;
+  configuration.merge_patch(run.config_patch);
   configuration["run"] = {{"command", run.command},
                           {"version", RBCSIM_VERSION},
                           {"mesh_source", "built-in " + run.morphology},
