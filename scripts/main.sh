@@ -6,7 +6,9 @@
 #      configuration;
 #   2. calibrate: the patch tests' moduli beside the paper's (Table 2 parameters);
 #   3. stretch: the quasi-static optical-tweezers curve of the discocyte against Mills et al. (2004),
-#      with all six forces and without F_ad/F_tc (the paper's Fig. 8);
+#      with all six forces and without F_ad/F_tc (the paper's Fig. 8); then calibrate's stretch fit
+#      (k_link fitted to Mills' curve, the contact patches held rigid as by glued beads: ~4 min)
+#      and the curve with the fitted parameters;
 #   4. shear: a short sweep (0, 1000, 2000 1/s) of the discocyte with and without F_ad/F_tc, on the
 #      coarse setting of README.md (642 vertices, dx 0.75 um, 10 strains: not yet steady);
 #   5. capillary: the three morphologies through the paper's three-morphology tube (6.8 um throat,
@@ -44,6 +46,12 @@ stage "stretch (quasi-static, the 13 forces of Mills et al. 2004)"
 "$rbcsim" stretch --set membrane.forces=link,bend,area,volume \
   --output "$(fresh_run stretch-discocyte-four-terms)"
 
+stage "calibrate the stretch (k_link fitted to Mills et al. 2004, glued beads) and its curve"
+"$rbcsim" calibrate --fits stretch --set stretch.contact.rigid=true \
+  --output "$(fresh_run calibrate-stretch)"
+"$rbcsim" stretch --config "$output_dir/calibrate-stretch/parameters.json" \
+  --output "$(fresh_run stretch-discocyte-fitted)"
+
 stage "shear (discocyte, 0/1000/2000 1/s, coarse setting)"
 shear_setting=(--set mesh.subdivisions=3 --set lattice.spacing_um=0.75 --set membrane.k_link_kBT=14
                --rates 0,1000,2000 --max-strain 10 --threads "$threads")
@@ -74,7 +82,8 @@ for pid in "${capillary_pids[@]}"; do wait "$pid"; done
 cat "$output_dir"/capillary-*.txt
 
 stage "report"
-"$rbcsim" report "$output_dir"/{calibrate,stretch-discocyte,stretch-discocyte-four-terms} \
+"$rbcsim" report "$output_dir"/{calibrate,calibrate-stretch} \
+  "$output_dir"/{stretch-discocyte,stretch-discocyte-four-terms,stretch-discocyte-fitted} \
   "$output_dir"/{shear-discocyte,shear-discocyte-four-terms} \
   "$output_dir"/capillary-{discocyte,echinocyte-III,stomatocyte-II} -o "$output_dir/report"
 stage "main: results in $output_dir, report in $output_dir/report/report.html"
