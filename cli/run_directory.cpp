@@ -9,6 +9,7 @@
 #include <span>
 
 #include "common/errors.hpp"
+#include "common/wall_clock.hpp"
 #include "config/config_sources.hpp"
 #include "coupling/checkpoint.hpp"
 #include "io/atomic_file.hpp"
@@ -61,7 +62,7 @@ RunDirectory::RunDirectory(std::string command, const CommonOptions& options,
     : command_(std::move(command)),
       morphology_(config.string("morphology")),
       threads_(apply_threads(options.threads)),
-      started_(std::chrono::steady_clock::now()) {
+      started_(WallClock::now()) {
   const auto now = std::chrono::system_clock::now();
   started_utc_ = utc_text(now, "%Y-%m-%dT%H:%M:%SZ");
   path_ = !options.output_directory.empty()
@@ -71,9 +72,7 @@ RunDirectory::RunDirectory(std::string command, const CommonOptions& options,
   if (options.resuming) wall_time_before_resume_s_ = interrupted_wall_time_s(path_);
 }
 
-double RunDirectory::elapsed_s() const {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-}
+double RunDirectory::elapsed_s() const { return seconds_since(started_); }
 
 void RunDirectory::start(const config::Config& config, const setup::CellMesh& cell) const {
   std::error_code error;

@@ -11,12 +11,12 @@
 // Every file is written atomically (io/atomic_file.hpp).
 #pragma once
 
-#include <chrono>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 
+#include "common/wall_clock.hpp"
 #include "common_options.hpp"
 #include "config/config.hpp"
 #include "coupling/coupled_simulation.hpp"
@@ -56,7 +56,7 @@ class RunDirectory {
   std::filesystem::path path_;
   int threads_ = 1;
   std::string started_utc_;
-  std::chrono::steady_clock::time_point started_;
+  WallClock::time_point started_;
   double wall_time_before_resume_s_ = 0.0;
 };
 

@@ -1,7 +1,6 @@
 #include "cases/fluid_stretch.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -13,6 +12,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/state_archive.hpp"
+#include "common/wall_clock.hpp"
 #include "coupling/snapshot.hpp"
 
 namespace rbcsim::cases {
@@ -127,7 +127,7 @@ struct ForceRunStart {
   std::size_t step = 0;
   std::size_t capped_steps = 0;
   double max_speed_lu = 0.0;
-  std::chrono::steady_clock::time_point wall_clock = std::chrono::steady_clock::now();
+  WallClock::time_point wall_clock = WallClock::now();
 };
 
 // Where the curve is: with the simulation's own state, what a resumed run continues from.
@@ -186,9 +186,7 @@ class ProgressInCheckpoint final : public coupling::StopCriterion {
   }
   void save_state(StateArchive& archive, const std::string& prefix) const override {
     const auto& p = progress_;
-    const double wall_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - p.start.wall_clock)
-            .count();
+    const double wall_s = seconds_since(p.start.wall_clock);
     archive.put(prefix + "force",
                 {static_cast<double>(p.force_index), p.force_started ? 1.0 : 0.0, p.ramp.from_pN,
                  p.ramp.to_pN, p.ramp.start_s, static_cast<double>(p.start.step),
@@ -204,9 +202,7 @@ class ProgressInCheckpoint final : public coupling::StopCriterion {
     p.start.step = static_cast<std::size_t>(force[5]);
     p.start.capped_steps = static_cast<std::size_t>(force[6]);
     p.start.max_speed_lu = force[7];
-    p.start.wall_clock = std::chrono::steady_clock::now() -
-                         std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                             std::chrono::duration<double>(force[8]));
+    p.start.wall_clock = started_seconds_ago(force[8]);
     const auto values = archive.take(prefix + "points", std::nullopt);
     if (values.size() % kPointValues != 0) {
       throw InputError(archive.source(), prefix + "points: not whole points");
@@ -343,9 +339,7 @@ StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const Stretch
       break;
     }
     progress.force_started = false;
-    point.wall_time_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - progress.start.wall_clock)
-            .count();
+    point.wall_time_s = seconds_since(progress.start.wall_clock);
     const auto positions_um = current_positions_um(*simulation);
     measure_point(*simulation, positions_um, progress.start, point);
     progress.points.push_back(point);

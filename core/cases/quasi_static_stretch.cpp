@@ -1,12 +1,12 @@
 #include "cases/quasi_static_stretch.hpp"
 
-#include <chrono>
 #include <string>
 
 #include "cases/relaxation_methods.hpp"
 #include "cases/stretch_geometry.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/wall_clock.hpp"
 
 namespace rbcsim::cases {
 namespace {
@@ -42,7 +42,7 @@ StretchRun run_quasi_static_stretch(const membrane::MembraneModel& model, const 
   for (const double force_pN : settings.forces_pN) {
     const auto external_pN = tweezer_forces_pN(model.vertex_count(), cell.patches, force_pN);
     StretchPoint point{.force_pN = force_pN};
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = WallClock::now();
     bool forces_known = false;
     try {
       const auto result = relax(model, positions_um, external_pN, relaxation_settings);
@@ -65,8 +65,7 @@ StretchRun run_quasi_static_stretch(const membrane::MembraneModel& model, const 
       run.interrupted = true;
       break;
     }
-    point.wall_time_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    point.wall_time_s = seconds_since(start);
     point.axial_um = axial_diameter_um(positions_um);
     point.transverse_um = transverse_diameter_um(positions_um);
     run.points.push_back(point);

@@ -3,7 +3,6 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -16,6 +15,7 @@
 #include "common/interrupt.hpp"
 #include "common/state_archive.hpp"
 #include "common/thread_count_scope.hpp"
+#include "common/wall_clock.hpp"
 #include "coupling/stop_criteria.hpp"
 #include "membrane/cell_geometry.hpp"
 #include "mesh/transform.hpp"
@@ -100,16 +100,20 @@ struct RecordSetup {
   double time_unit_rate_per_s = 0.0;  // simulated rate (rate 0: its time unit)
   bool rotating = false;              // rate > 0: the windows are half turns of the tracked point
   double tolerance_per_strain = 0.0;
+  WallClock::time_point started;  // when the rate started: its wall time
 };
 
 // A rate's record and its steady state (shear_case.hpp, "Steady state"). The first stop criterion
 // of the rate, so it sees every step: every sample_interval_steps it samples the tracked point's
 // unwrapped angle and the cell's shape, and every kSamplesPerCheck samples it compares the shape's
-// means over the last window with those over the window before. Its series and its count of
-// steady checks ride in the checkpoint, so a resumed rate ends as a straight one.
+// means over the last window with those over the window before. Its series, its count of
+// steady checks and the rate's wall time so far ride in the checkpoint, so a resumed rate ends as
+// a straight one and reports the time of both runs.
 class ShearRecord final : public coupling::StopCriterion {
  public:
   ShearRecord(RecordSetup setup, bool& steady) : setup_(setup), steady_(steady) {}
+
+  double wall_time_s() const { return seconds_since(setup_.started); }
 
   std::optional<std::string> check(const coupling::CoupledSimulation& simulation) override {
     const std::size_t step = simulation.time_step();
@@ -161,6 +165,7 @@ class ShearRecord final : public coupling::StopCriterion {
       archive.put(prefix + name, std::move(values));
     }
     archive.put(prefix + "steady_checks", {static_cast<double>(steady_checks_)});
+    archive.put(prefix + "wall_time_s", {wall_time_s()});
   }
   void restore_state(StateArchive& archive, const std::string& prefix) override {
     times_s_ = archive.take(prefix + "times_s", std::nullopt);
@@ -171,6 +176,8 @@ class ShearRecord final : public coupling::StopCriterion {
       for (std::size_t i = 0; i < values.size(); ++i) shapes_[i].*member = values[i];
     }
     steady_checks_ = static_cast<int>(archive.take(prefix + "steady_checks", 1).front());
+    // The rate "started" that much before now: its wall time goes on from the checkpoint's.
+    setup_.started = started_seconds_ago(archive.take_number(prefix + "wall_time_s"));
   }
 
  private:
@@ -367,7 +374,7 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
                           const ShearEngine& engine, const ShearSettings& settings,
                           const ShearRatePlan& plan, std::size_t rate_index,
                           const ShearHooks& hooks) {
-  const auto started = std::chrono::steady_clock::now();
+  const auto started = WallClock::now();
   const double dx_um = engine.lattice.spacing_um;
   const ShearBox box = shear_box(cell, dx_um, settings);
   const auto units = simulated_units(engine, plan);
@@ -390,7 +397,8 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
           .strain_per_sample = static_cast<double>(sample_interval_steps) * plan.strain_rate_lu,
           .time_unit_rate_per_s = time_unit_rate,
           .rotating = plan.shear_rate_per_s > 0.0,
-          .tolerance_per_strain = settings.steady_tolerance_per_strain},
+          .tolerance_per_strain = settings.steady_tolerance_per_strain,
+          .started = started},
       steady);
   const ShearRecord& record = *owned_record;  // the simulation owns it from here
   simulation.add_stop_criterion(std::move(owned_record));
@@ -427,8 +435,7 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
   point.steps = simulation.time_step();
   point.strain = simulation.time_s() * time_unit_rate;
   point.time_s = simulation.time_s() * plan.viscosity_scale;
-  point.wall_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  point.wall_time_s = record.wall_time_s();
   if (point.failure.empty() && hooks.finished) hooks.finished(rate_index, point, simulation);
   return point;
 }

@@ -1,13 +1,13 @@
 #include "cases/stretch_fit.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/scalar_minimum.hpp"
+#include "common/wall_clock.hpp"
 
 namespace rbcsim::cases {
 namespace {
@@ -36,7 +36,7 @@ void require_loaded_reference_force(const StretchFitSettings& settings) {
 
 StretchFitEvaluation evaluate(const StretchCell& cell, membrane::MembraneParameters parameters,
                               const StretchSettings& stretch, const StretchFitSettings& settings) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = WallClock::now();
   const membrane::MembraneModel model(cell.mesh, parameters);
   const auto run = run_stretch(model, cell, stretch, {});
   if (run.interrupted) throw Interrupted("calibrate, stretch fit: " + run.failure);
@@ -46,8 +46,7 @@ StretchFitEvaluation evaluate(const StretchCell& cell, membrane::MembraneParamet
   evaluation.misfit =
       run.ok() ? evaluation.comparison.misfit : std::numeric_limits<double>::infinity();
   evaluation.failure = run.failure;
-  evaluation.wall_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  evaluation.wall_time_s = seconds_since(start);
   return evaluation;
 }
 

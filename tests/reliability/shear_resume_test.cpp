@@ -6,16 +6,19 @@
 // --checkpoint-every and --resume. The coarse sweep of shear_case_test.cpp, one unit of strain.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <csignal>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "cases/shear_case.hpp"
 #include "common/interrupt.hpp"
+#include "common/wall_clock.hpp"
 #include "coupling/checkpoint.hpp"
 #include "mesh/cell_shapes.hpp"
 #include "support/interrupt_scope.hpp"
@@ -31,6 +34,10 @@ using rbcsim::testing::ScratchDirectory;
 // populations post-collision in the swapped (AA) layout, which the checkpoint restores as is.
 constexpr std::size_t kShearInterruptStep =
     181;  // past half the run: tank treading is measured there
+
+// Rate 1 sleeps this long before it is interrupted: time the resumed rate must still count.
+constexpr auto kSleepBeforeInterrupt = std::chrono::milliseconds(300);
+constexpr double kSleptSeconds = 0.3;
 
 using rbcsim::testing::checkpoint_only_when_interrupted;
 using rbcsim::testing::InterruptScope;
@@ -107,6 +114,9 @@ TEST(ShearResume, InterruptedSweepResumesToTheStraightSweep) {
   first.configure = [&scratch](std::size_t rate, coupling::CoupledSimulation& simulation) {
     checkpoint_only_when_interrupted(simulation, checkpoint_of(scratch, rate), "shear resume test");
     simulation.add_observer({"interrupt", 1, [rate](const coupling::CoupledSimulation& s) {
+                               if (rate == 1 && s.time_step() == 1) {
+                                 std::this_thread::sleep_for(kSleepBeforeInterrupt);
+                               }
                                if (rate == 1 && s.time_step() == kShearInterruptStep) {
                                  request_interrupt(SIGINT);
                                }
@@ -116,6 +126,7 @@ TEST(ShearResume, InterruptedSweepResumesToTheStraightSweep) {
   EXPECT_FALSE(interrupted[0].interrupted);
   ASSERT_TRUE(interrupted[1].interrupted) << interrupted[1].failure;
   EXPECT_EQ(interrupted[1].steps, kShearInterruptStep);
+  EXPECT_GE(interrupted[1].wall_time_s, kSleptSeconds);
   ASSERT_TRUE(std::filesystem::exists(checkpoint_of(scratch, 1)));
 
   // Still interrupted: the rates not started are reported so, not run.
@@ -131,13 +142,19 @@ TEST(ShearResume, InterruptedSweepResumesToTheStraightSweep) {
     checkpoint_only_when_interrupted(simulation, checkpoint_of(scratch, rate), "shear resume test");
     simulation.resume_from(checkpoint_of(scratch, rate));
   };
+  const auto resume_started = WallClock::now();
   const auto resumed = coarse.sweep(second);
+  const double resumed_sweep_s = seconds_since(resume_started);
   ASSERT_EQ(resumed.size(), 2u);
   for (std::size_t i = 0; i < resumed.size(); ++i) {
     SCOPED_TRACE(i);
     EXPECT_FALSE(resumed[i].interrupted);
     expect_same(resumed[i], straight[i]);
   }
+  // Rate 1's wall time goes on from the checkpoint's: the sleep before the interrupt counts, so
+  // the rate took longer than the whole resumed sweep.
+  EXPECT_GE(resumed[1].wall_time_s, interrupted[1].wall_time_s);
+  EXPECT_GT(resumed[1].wall_time_s, resumed_sweep_s);
 }
 
 // Through the binary: a straight run with --checkpoint-every leaves each rate's last checkpoint
