@@ -1,7 +1,10 @@
 // Optical-tweezers stretching (DESIGN.md §4 stretch): axial and transverse diameters against
 // force for every run, over the Mills et al. (2004) measurements with their error bars.
+#include <optional>
+
+#include "common/errors.hpp"
 #include "common/format.hpp"
-#include "membrane/parameters.hpp"
+#include "config/config.hpp"
 #include "report/reference_data.hpp"
 #include "report/sections.hpp"
 #include "report/svg_plot.hpp"
@@ -40,15 +43,27 @@ std::vector<svg::Series> mills_series() {
       {"Mills et al. 2004, transverse", diameters.transverse, colour, svg::Marker::square, false}};
 }
 
-// "discocyte, all six, quasi-static", then what departs from the default set-up (Table 2's
-// k_link, free contact patches), e.g. the parameters of calibrate's stretch fit: ", k_link 3.28
-// kBT, rigid patches". Config files of older versions may lack the members: they are optional.
+// The morphology's own k_link (Table 2: 7 kBT for the discocyte, 11 for the aged cells, as its
+// config overlay sets it); none for a morphology rbcsim does not know.
+std::optional<double> table2_k_link_kBT(const std::string& morphology) {
+  try {
+    return config::resolve_config({.morphology = morphology}).number("membrane.k_link_kBT");
+  } catch (const InputError&) {  // an unknown morphology: nothing to compare with
+    return std::nullopt;
+  }
+}
+
+// "discocyte, all six, quasi-static", then what departs from the morphology's default set-up
+// (its Table 2 k_link, free contact patches), e.g. the parameters of calibrate's stretch fit:
+// ", k_link 3.28 kBT, rigid patches". Config files of older versions may lack the members: they
+// are optional.
 std::string run_description(const RunDirectory& run) {
   auto description = morphology_and_terms(run) + ", " + run.section().at("mode").string();
   const auto config = run.config_field();
   const auto membrane = config.find("membrane");
   const auto k_link = membrane ? membrane->find("k_link_kBT") : std::nullopt;
-  if (k_link && k_link->number() != membrane::MembraneParameters{}.k_link_kBT) {
+  const auto table2_k_link = table2_k_link_kBT(run.morphology);
+  if (k_link && table2_k_link && k_link->number() != *table2_k_link) {
     description += ", k_link " + format_significant(k_link->number(), 3) + " kBT";
   }
   const auto stretch = config.find("stretch");

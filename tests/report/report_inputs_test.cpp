@@ -130,6 +130,28 @@ TEST(ReportInputs, StretchLabelsNameAFittedLinkStiffnessAndRigidPatches) {
   }
 }
 
+// The default k_link is the morphology's own: Table 2's 11 kBT is not news for a stomatocyte II,
+// the discocyte's 7 is.
+TEST(ReportInputs, StretchLabelsCompareTheLinkStiffnessWithTheMorphologysOwn) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto own = rbcsim::testing::stretch_run(rbcsim::testing::all_terms(), 90, 0.3);
+  own.morphology = "stomatocyte-II";
+  own.config_patch = {{"membrane", {{"k_link_kBT", 11.0}}}};
+  auto discocytes = own;
+  discocytes.config_patch = {{"membrane", {{"k_link_kBT", 7.0}}}};
+  const auto page = parse_xml(
+      build_report(read_run_directories({write_run(scratch.path() / "own", own),
+                                         write_run(scratch.path() / "disco", discocytes)}))
+          .html);
+  std::vector<std::string> series;
+  for (const auto i : page.find("g", "series"))
+    series.push_back(page.elements[i].attribute("data-label"));
+  for (const std::string label : {"stomatocyte-II, all six, quasi-static, axial",
+                                  "stomatocyte-II, all six, quasi-static, k_link 7 kBT, axial"}) {
+    EXPECT_NE(std::find(series.begin(), series.end(), label), series.end()) << label;
+  }
+}
+
 TEST(ReportInputs, TransitOrderDifferentFromThePaperIsSaid) {
   rbcsim::testing::ScratchDirectory scratch;
   const auto documents = build_report(read_run_directories(
