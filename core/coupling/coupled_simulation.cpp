@@ -285,7 +285,10 @@ void CoupledSimulation::restore_state(StateArchive& archive) {
   }
   forces_spread_ = false;
   // The state restored was observed by the run that saved it.
-  for (auto& registered : observers_) registered.last_observed_step = time_step_;
+  for (auto& registered : observers_) {
+    registered.last_observed_step = time_step_;
+    if (registered.observer.resumed) registered.observer.resumed(*this);
+  }
 }
 
 void CoupledSimulation::fail(std::optional<std::size_t> cell, const std::string& reason) const {

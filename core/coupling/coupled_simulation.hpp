@@ -61,6 +61,9 @@ struct Observer {
   std::string name;  // unique within a simulation
   std::size_t interval_steps = 1;
   std::function<void(const CoupledSimulation&)> observe;
+  // Optional: called once a checkpoint is restored, so an observer that writes a growing file
+  // (a snapshot collection) continues what the interrupted run wrote up to that state.
+  std::function<void(const CoupledSimulation&)> resumed = nullptr;
 };
 
 // Adds forces (pN) to a cell's vertices every step, e.g. optical tweezers. Called after the

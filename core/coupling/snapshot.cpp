@@ -40,6 +40,18 @@ struct Series {
     entries.push_back({simulation.time_s(), file});
     io::write_pvd_collection(directory / collection, entries);
   }
+
+  // After a resume: the interrupted run's entries up to the restored state. Those after it are
+  // dropped (written after the checkpoint, they are written again, to the same file names).
+  void continue_existing(const CoupledSimulation& simulation,
+                         const std::filesystem::path& directory) {
+    const auto path = directory / collection;
+    entries.clear();
+    if (!std::filesystem::exists(path)) return;
+    for (auto& entry : io::read_pvd_collection(path)) {
+      if (entry.timestep <= simulation.time_s()) entries.push_back(std::move(entry));
+    }
+  }
 };
 
 struct VtkOutputState {
@@ -48,10 +60,21 @@ struct VtkOutputState {
   Series fluid{"fluid.pvd", {}};
 };
 
+void add_cell_series(VtkOutputState& state, const CoupledSimulation& simulation) {
+  while (state.cells.size() < simulation.cells().size()) {
+    state.cells.push_back({cell_name(state.cells.size()) + ".pvd", {}});
+  }
+}
+
+void continue_membranes(VtkOutputState& state, const CoupledSimulation& simulation) {
+  add_cell_series(state, simulation);
+  for (auto& series : state.cells) series.continue_existing(simulation, state.directory);
+}
+
 void write_membranes(VtkOutputState& state, const CoupledSimulation& simulation) {
   std::filesystem::create_directories(state.directory / "vtk");
+  add_cell_series(state, simulation);
   for (std::size_t k = 0; k < simulation.cells().size(); ++k) {
-    if (state.cells.size() <= k) state.cells.push_back({cell_name(k) + ".pvd", {}});
     const std::string file = "vtk/" + cell_name(k) + step_suffix(simulation.time_step()) + ".vtp";
     write_cell_snapshot(state.directory / file, simulation, k);
     state.cells[k].add(simulation, state.directory, file);
@@ -116,12 +139,17 @@ void add_vtk_output(CoupledSimulation& simulation, const std::filesystem::path& 
   auto state = std::make_shared<VtkOutputState>();
   state->directory = directory;
   if (intervals.membrane_steps > 0) {
-    simulation.add_observer({"vtk_membrane", intervals.membrane_steps,
-                             [state](const CoupledSimulation& s) { write_membranes(*state, s); }});
+    simulation.add_observer(
+        {"vtk_membrane", intervals.membrane_steps,
+         [state](const CoupledSimulation& s) { write_membranes(*state, s); },
+         [state](const CoupledSimulation& s) { continue_membranes(*state, s); }});
   }
   if (intervals.fluid_steps > 0) {
     simulation.add_observer({"vtk_fluid", intervals.fluid_steps,
-                             [state](const CoupledSimulation& s) { write_fluid(*state, s); }});
+                             [state](const CoupledSimulation& s) { write_fluid(*state, s); },
+                             [state](const CoupledSimulation& s) {
+                               state->fluid.continue_existing(s, state->directory);
+                             }});
   }
 }
 

@@ -35,7 +35,8 @@ struct SnapshotIntervals {
 // Registers the observers "vtk_membrane" and "vtk_fluid", which write
 // <directory>/vtk/cell<K>_<step>.vtp and <directory>/vtk/fluid_<step>.vti and rewrite
 // <directory>/cell<K>.pvd and <directory>/fluid.pvd after each snapshot, so that an interrupted
-// run still leaves a valid collection.
+// run still leaves a valid collection. After a resume (CoupledSimulation::resume_from) the
+// collections go on from the interrupted run's, up to the restored state.
 void add_vtk_output(CoupledSimulation& simulation, const std::filesystem::path& directory,
                     const SnapshotIntervals& intervals);
 

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace rbcsim::io {
 
@@ -16,5 +17,9 @@ struct PvdEntry {
 // Through write_file_atomically. Throws std::invalid_argument for an empty file name or one with
 // XML markup characters.
 void write_pvd_collection(const std::filesystem::path& path, std::span<const PvdEntry> entries);
+
+// The entries of a collection written by write_pvd_collection, in file order, so a resumed run can
+// continue it. Throws InputError naming the file if it is not such a collection.
+std::vector<PvdEntry> read_pvd_collection(const std::filesystem::path& path);
 
 }  // namespace rbcsim::io

@@ -1,11 +1,12 @@
-// The .pvd collection lists every data set with its time, and refuses names that would break the
-// XML.
+// The .pvd collection lists every data set with its time, refuses names that would break the XML,
+// and reads back what it wrote (a resumed run continues its collections).
 #include "io/pvd_collection.hpp"
 
 #include <gtest/gtest.h>
 
 #include <vector>
 
+#include "common/errors.hpp"
 #include "support/run_rbcsim.hpp"
 #include "support/scratch_directory.hpp"
 
@@ -33,6 +34,46 @@ TEST(PvdCollection, RefusesEmptyOrMarkupFileNames) {
   EXPECT_THROW(rbcsim::io::write_pvd_collection(scratch.path() / "x.pvd", empty),
                std::invalid_argument);
   EXPECT_FALSE(std::filesystem::exists(scratch.path() / "x.pvd"));
+}
+
+TEST(PvdCollection, ReadsBackEveryEntryItWrote) {
+  const rbcsim::testing::ScratchDirectory scratch;
+  // Times whose shortest text has an exponent, or no short form at all.
+  const std::vector<rbcsim::io::PvdEntry> entries = {
+      {0.0, "vtk/fluid_000000000.vti"}, {1.1e-06, "vtk/fluid_000000013.vti"}, {0.1 + 0.2, "b.vti"}};
+  rbcsim::io::write_pvd_collection(scratch.path() / "fluid.pvd", entries);
+  const auto read = rbcsim::io::read_pvd_collection(scratch.path() / "fluid.pvd");
+  ASSERT_EQ(read.size(), entries.size());
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    EXPECT_EQ(read[i].timestep, entries[i].timestep) << i;
+    EXPECT_EQ(read[i].file, entries[i].file) << i;
+  }
+  rbcsim::io::write_pvd_collection(scratch.path() / "empty.pvd", {});
+  EXPECT_TRUE(rbcsim::io::read_pvd_collection(scratch.path() / "empty.pvd").empty());
+}
+
+// Each message names the file.
+TEST(PvdCollection, ReadingRefusesATruncatedCollectionOrABadTime) {
+  const rbcsim::testing::ScratchDirectory scratch;
+  const auto truncated = scratch.write("truncated.pvd",
+                                       "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\">\n"
+                                       "  <Collection>\n");
+  EXPECT_THROW(
+      {
+        try {
+          rbcsim::io::read_pvd_collection(truncated);
+        } catch (const rbcsim::InputError& error) {
+          EXPECT_NE(std::string(error.what()).find("truncated.pvd"), std::string::npos);
+          throw;
+        }
+      },
+      rbcsim::InputError);
+  const auto bad_time =
+      scratch.write("bad_time.pvd",
+                    "<VTKFile type=\"Collection\">\n<Collection>\n"
+                    "<DataSet timestep=\"1e-3x\" group=\"\" part=\"0\" file=\"a.vtp\"/>\n"
+                    "</Collection>\n</VTKFile>\n");
+  EXPECT_THROW(rbcsim::io::read_pvd_collection(bad_time), rbcsim::InputError);
 }
 
 }  // namespace

@@ -143,7 +143,7 @@ std::string number_text(double value) {
 // Through the binary: a run with --checkpoint-every leaves its last checkpoint (step 27 of 30,
 // odd);
 // --resume of its directory runs the last steps again and must rewrite the same result.json
-// "capillary" object and capillary_timeseries.csv.
+// "capillary" object, capillary_timeseries.csv and snapshot collections.
 TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
   const ScratchDirectory scratch;
   const double dt_s = CoarseCapillary().dt_s_of();
@@ -152,7 +152,10 @@ TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
   settings +=
       " --set capillary.max_time_s=" +
       number_text((static_cast<double>(kTotalSteps) - 0.5) * dt_s) +
-      " --set capillary.sample_interval_s=" + number_text(static_cast<double>(kSampleSteps) * dt_s);
+      " --set capillary.sample_interval_s=" +
+      number_text(static_cast<double>(kSampleSteps) * dt_s) +
+      " --set output.membrane_interval_s=" + number_text(static_cast<double>(kSampleSteps) * dt_s) +
+      " --set output.fluid_interval_s=" + number_text(static_cast<double>(2 * kSampleSteps) * dt_s);
   const auto run_dir = scratch.path() / "run";
   const auto straight = rbcsim::testing::run_rbcsim(
       "capillary --checkpoint-every 9 --output '" + run_dir.string() + "'" + settings,
@@ -163,6 +166,8 @@ TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
   const auto straight_result =
       nlohmann::json::parse(rbcsim::testing::read_text(run_dir / "result.json"));
   const auto straight_rows = rows_of(run_dir / "capillary_timeseries.csv");
+  const auto straight_cells = rows_of(run_dir / "cell0.pvd");
+  const auto straight_fluid = rows_of(run_dir / "fluid.pvd");
   std::filesystem::remove(run_dir / "result.json");
   std::filesystem::remove(run_dir / "capillary_timeseries.csv");
 
@@ -173,6 +178,10 @@ TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
       nlohmann::json::parse(rbcsim::testing::read_text(run_dir / "result.json"));
   EXPECT_EQ(resumed_result["capillary"], straight_result["capillary"]);
   EXPECT_EQ(rows_of(run_dir / "capillary_timeseries.csv"), straight_rows);
+  // The collections go on from the interrupted run's: every snapshot, before and after step 27.
+  EXPECT_GT(straight_cells.size(), 10u);
+  EXPECT_EQ(rows_of(run_dir / "cell0.pvd"), straight_cells);
+  EXPECT_EQ(rows_of(run_dir / "fluid.pvd"), straight_fluid);
 }
 
 TEST(CapillaryResume, AMissingCheckpointIsBadInputAndLeavesNoFile) {

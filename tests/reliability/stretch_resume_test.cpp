@@ -142,22 +142,24 @@ std::string without_last_wall_time(const std::string& csv) {
 
 // A straight run with --checkpoint-every leaves the checkpoint of its last force's last even
 // hundred steps; --resume from it keeps the first force (its wall time is the first run's) and runs
-// the last steps again, rewriting the same results.
+// the last steps again, rewriting the same results and snapshot collection.
 TEST(StretchResume, ResumeThroughTheBinaryRewritesTheSameResults) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
+  const std::string settings = kSettings + " --set stretch.fluid.snapshot_interval_s=1e-4";
   const auto straight = rbcsim::testing::run_rbcsim(
-      "stretch --checkpoint-every 100 --output '" + run_dir.string() + "'" + kSettings,
+      "stretch --checkpoint-every 100 --output '" + run_dir.string() + "'" + settings,
       scratch.path());
   ASSERT_EQ(straight.exit_code, 0) << straight.err;
   ASSERT_TRUE(std::filesystem::exists(run_dir / coupling::kCheckpointFileName));
   const auto straight_section = rbcsim::testing::read_json(run_dir / "result.json")["stretch"];
   const auto straight_csv = rbcsim::testing::read_text(run_dir / "stretch.csv");
+  const auto straight_snapshots = rbcsim::testing::read_text(run_dir / "cell0.pvd");
   std::filesystem::remove(run_dir / "result.json");
   std::filesystem::remove(run_dir / "stretch.csv");
 
   const auto resumed = rbcsim::testing::run_rbcsim(
-      "stretch --resume '" + run_dir.string() + "'" + kSettings, scratch.path());
+      "stretch --resume '" + run_dir.string() + "'" + settings, scratch.path());
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   const auto result = rbcsim::testing::read_json(run_dir / "result.json");
   EXPECT_EQ(result["status"], "ok");
@@ -169,6 +171,9 @@ TEST(StretchResume, ResumeThroughTheBinaryRewritesTheSameResults) {
             without_last_wall_time(straight_csv));
   EXPECT_TRUE(std::filesystem::exists(run_dir / "shapes" / "stretch_000.vtp"));
   EXPECT_TRUE(std::filesystem::exists(run_dir / "shapes" / "stretch_001.vtp"));
+  // The snapshot collection goes on from the first run's, before and after the checkpoint.
+  EXPECT_GT(std::count(straight_snapshots.begin(), straight_snapshots.end(), '\n'), 10);
+  EXPECT_EQ(rbcsim::testing::read_text(run_dir / "cell0.pvd"), straight_snapshots);
 }
 
 // Ctrl-C (SIGINT once the first force's shape is written) on a curve of 41 forces of at most
