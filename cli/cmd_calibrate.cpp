@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cases/calibration.hpp"
+#include "cases/stretch_output.hpp"
 #include "command_registry.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -127,19 +128,11 @@ void print_table(const nlohmann::ordered_json& result, const cases::Calibration&
               directory.threads(), directory.path().c_str());
 }
 
-// Every curve the stretch fit ran, in order: how the search went (a failed curve's misfit is inf).
 void write_stretch_fit_table(const RunDirectory& directory, const cases::StretchFit& fit) {
   std::vector<std::vector<double>> rows;
-  for (const auto& curve : fit.evaluations) {
-    const auto& comparison = curve.comparison;
-    rows.push_back({curve.k_link_kBT, curve.misfit, comparison.rms_axial_um.value_or(0.0),
-                    comparison.rms_transverse_um.value_or(0.0),
-                    static_cast<double>(comparison.inside_error_bars), curve.wall_time_s});
-  }
-  const std::vector<std::string> columns = {"k_link_kBT",        "misfit",
-                                            "rms_axial_um",      "rms_transverse_um",
-                                            "inside_error_bars", "wall_time_s"};
-  io::write_csv_file(directory.path() / "stretch_fit.csv", columns, rows);
+  for (const auto& curve : fit.evaluations) rows.push_back(cases::stretch_fit_table_row(curve));
+  io::write_csv_file(directory.path() / "stretch_fit.csv", cases::stretch_fit_table_columns(),
+                     rows);
 }
 
 void run_calibrate_command(const CalibrateOptions& options) {

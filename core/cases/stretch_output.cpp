@@ -1,5 +1,7 @@
 #include "cases/stretch_output.hpp"
 
+#include <limits>
+
 #include "cases/json_values.hpp"
 #include "io/vtk_polydata.hpp"
 
@@ -37,6 +39,22 @@ std::vector<double> stretch_table_row(const StretchPoint& point) {
           point.time_s,
           point.max_mach_number,
           point.max_reynolds_number};
+}
+
+std::vector<std::string> stretch_fit_table_columns() {
+  return {"k_link_kBT",        "misfit",     "rms_axial_um", "rms_transverse_um",
+          "inside_error_bars", "wall_time_s"};
+}
+
+std::vector<double> stretch_fit_table_row(const StretchFitEvaluation& curve) {
+  constexpr double kNotMeasured = std::numeric_limits<double>::quiet_NaN();
+  const auto& comparison = curve.comparison;
+  return {curve.k_link_kBT,
+          curve.misfit,
+          comparison.rms_axial_um.value_or(kNotMeasured),
+          comparison.rms_transverse_um.value_or(kNotMeasured),
+          static_cast<double>(comparison.inside_error_bars),
+          curve.wall_time_s};
 }
 
 nlohmann::ordered_json stretch_result_section(std::string_view mode,

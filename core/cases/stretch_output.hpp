@@ -1,5 +1,6 @@
 // What a stretch run writes (the run-directory contract): one VTK PolyData shape per force, the
-// rows of stretch.csv, and the "stretch" object of result.json (schemas/result.schema.json).
+// rows of stretch.csv, and the "stretch" object of result.json (schemas/result.schema.json); and
+// the rows of the calibrate stretch fit's stretch_fit.csv.
 #pragma once
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "cases/stretch_case.hpp"
+#include "cases/stretch_fit.hpp"
 #include "cases/stretch_reference.hpp"
 #include "mesh/triangle_mesh.hpp"
 
@@ -21,6 +23,11 @@ void write_stretch_shape(const std::filesystem::path& path,
 
 std::vector<std::string> stretch_table_columns();
 std::vector<double> stretch_table_row(const StretchPoint& point);
+
+// One row per curve of the fit, in the order run: how the search went. A failed curve's misfit is
+// inf and its RMS deviations nan.
+std::vector<std::string> stretch_fit_table_columns();
+std::vector<double> stretch_fit_table_row(const StretchFitEvaluation& curve);
 
 // {"mode", "forces_terms", "points": [...], "comparison": {...}}.
 nlohmann::ordered_json stretch_result_section(std::string_view mode,

@@ -1,9 +1,13 @@
 // The calibrate stretch fit on a coarse cell (162 vertices, seconds): it recovers the k_link that
-// made a curve, and it says so when the misfit has no minimum.
+// made a curve, and it says so when the misfit has no minimum; its table marks a failed curve.
 #include "cases/stretch_fit.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
+#include "cases/stretch_output.hpp"
 #include "common/errors.hpp"
 #include "mesh/cell_shapes.hpp"
 #include "support/relative_difference.hpp"
@@ -86,6 +90,24 @@ TEST(StretchFit, RefusesForcesThatSpanNoLoadedReferenceForce) {
   } catch (const rbcsim::InputError& error) {
     EXPECT_NE(std::string(error.what()).find("stretch.forces_pN"), std::string::npos);
   }
+}
+
+// A failed curve measured nothing: its row says so (misfit inf, RMS nan), never a zero deviation
+// that would read as a perfect fit.
+TEST(StretchFit, TableRowOfAFailedCurveMeasuresNothing) {
+  rbcsim::cases::StretchFitEvaluation failed{.k_link_kBT = 2.5,
+                                             .misfit = std::numeric_limits<double>::infinity(),
+                                             .comparison = {},
+                                             .failure = "F = 192.7 pN: vertex force cap",
+                                             .wall_time_s = 3.0};
+  const auto row = rbcsim::cases::stretch_fit_table_row(failed);
+  ASSERT_EQ(row.size(), rbcsim::cases::stretch_fit_table_columns().size());
+  EXPECT_EQ(row[0], 2.5);
+  EXPECT_TRUE(std::isinf(row[1]));
+  EXPECT_TRUE(std::isnan(row[2]));
+  EXPECT_TRUE(std::isnan(row[3]));
+  EXPECT_EQ(row[4], 0.0);
+  EXPECT_EQ(row[5], 3.0);
 }
 
 }  // namespace
