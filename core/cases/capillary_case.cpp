@@ -30,10 +30,15 @@ struct CellAxis {
   double angle_rad;
 };
 
+// The signed axes matter for a shape without mirror symmetry: the stomatocyte's cup opens towards
+// +z, so "x" opens it downstream and "-x" upstream, as the parachute a cell becomes in a tube.
 const std::array kCellAxes{
     CellAxis{"z", Eigen::Vector3d::UnitZ(), 0.0},
-    CellAxis{"x", Eigen::Vector3d::UnitY(), 0.5 * std::numbers::pi},   // z -> x
-    CellAxis{"y", Eigen::Vector3d::UnitX(), -0.5 * std::numbers::pi},  // z -> y
+    CellAxis{"x", Eigen::Vector3d::UnitY(), 0.5 * std::numbers::pi},    // z -> x
+    CellAxis{"y", Eigen::Vector3d::UnitX(), -0.5 * std::numbers::pi},   // z -> y
+    CellAxis{"-z", Eigen::Vector3d::UnitX(), std::numbers::pi},         // z -> -z
+    CellAxis{"-x", Eigen::Vector3d::UnitY(), -0.5 * std::numbers::pi},  // z -> -x
+    CellAxis{"-y", Eigen::Vector3d::UnitX(), 0.5 * std::numbers::pi},   // z -> -y
 };
 
 void require_positive(double value, const char* option) {

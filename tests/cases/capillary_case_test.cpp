@@ -49,6 +49,9 @@ TEST(CapillaryCase, CellAxisTurnsTheMeshZAxis) {
   EXPECT_LT((oriented_cell(point, "z").positions_um[0] - Vec3(0, 0, 1)).norm(), 1e-15);
   EXPECT_LT((oriented_cell(point, "x").positions_um[0] - Vec3(1, 0, 0)).norm(), 1e-15);
   EXPECT_LT((oriented_cell(point, "y").positions_um[0] - Vec3(0, 1, 0)).norm(), 1e-15);
+  EXPECT_LT((oriented_cell(point, "-z").positions_um[0] - Vec3(0, 0, -1)).norm(), 1e-15);
+  EXPECT_LT((oriented_cell(point, "-x").positions_um[0] - Vec3(-1, 0, 0)).norm(), 1e-15);
+  EXPECT_LT((oriented_cell(point, "-y").positions_um[0] - Vec3(0, -1, 0)).norm(), 1e-15);
   EXPECT_THROW(oriented_cell(point, "w"), InputError);
 }
 
