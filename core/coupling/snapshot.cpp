@@ -71,6 +71,10 @@ void continue_membranes(VtkOutputState& state, const CoupledSimulation& simulati
   for (auto& series : state.cells) series.continue_existing(simulation, state.directory);
 }
 
+void continue_fluid(VtkOutputState& state, const CoupledSimulation& simulation) {
+  state.fluid.continue_existing(simulation, state.directory);
+}
+
 void write_membranes(VtkOutputState& state, const CoupledSimulation& simulation) {
   std::filesystem::create_directories(state.directory / "vtk");
   add_cell_series(state, simulation);
@@ -147,9 +151,7 @@ void add_vtk_output(CoupledSimulation& simulation, const std::filesystem::path& 
   if (intervals.fluid_steps > 0) {
     simulation.add_observer({"vtk_fluid", intervals.fluid_steps,
                              [state](const CoupledSimulation& s) { write_fluid(*state, s); },
-                             [state](const CoupledSimulation& s) {
-                               state->fluid.continue_existing(s, state->directory);
-                             }});
+                             [state](const CoupledSimulation& s) { continue_fluid(*state, s); }});
   }
 }
 

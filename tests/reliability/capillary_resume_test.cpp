@@ -5,6 +5,7 @@
 // --resume.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
@@ -140,12 +141,9 @@ std::string number_text(double value) {
   return text;
 }
 
-// Through the binary: a run with --checkpoint-every leaves its last checkpoint (step 27 of 30,
-// odd);
-// --resume of its directory runs the last steps again and must rewrite the same result.json
-// "capillary" object, capillary_timeseries.csv and snapshot collections.
-TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
-  const ScratchDirectory scratch;
+// The binary's options for the coarse run of kTotalSteps steps, with a sample and a membrane
+// snapshot every kSampleSteps and a fluid snapshot every 2 kSampleSteps.
+std::string coarse_binary_settings() {
   const double dt_s = CoarseCapillary().dt_s_of();
   std::string settings = " --quiet --threads 1";
   for (const auto& assignment : kCoarseAssignments) settings += " --set " + assignment;
@@ -156,13 +154,29 @@ TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
       number_text(static_cast<double>(kSampleSteps) * dt_s) +
       " --set output.membrane_interval_s=" + number_text(static_cast<double>(kSampleSteps) * dt_s) +
       " --set output.fluid_interval_s=" + number_text(static_cast<double>(2 * kSampleSteps) * dt_s);
-  const auto run_dir = scratch.path() / "run";
+  return settings;
+}
+
+// The coarse run through the binary with --checkpoint-every 9: it leaves its last checkpoint
+// (step 27 of 30, odd) in run_dir.
+void run_with_checkpoints(const ScratchDirectory& scratch, const std::filesystem::path& run_dir,
+                          const std::string& settings) {
   const auto straight = rbcsim::testing::run_rbcsim(
       "capillary --checkpoint-every 9 --output '" + run_dir.string() + "'" + settings,
       scratch.path());
   // 30 steps leave the cell upstream of the narrow section: a "failed" run (exit 1).
   ASSERT_EQ(straight.exit_code, 1) << straight.err;
   ASSERT_TRUE(std::filesystem::exists(run_dir / coupling::kCheckpointFileName));
+}
+
+// Through the binary: --resume of a directory left by run_with_checkpoints runs the last steps
+// again and must rewrite the same result.json "capillary" object, capillary_timeseries.csv and
+// snapshot collections.
+TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
+  const ScratchDirectory scratch;
+  const std::string settings = coarse_binary_settings();
+  const auto run_dir = scratch.path() / "run";
+  ASSERT_NO_FATAL_FAILURE(run_with_checkpoints(scratch, run_dir, settings));
   const auto straight_result =
       nlohmann::json::parse(rbcsim::testing::read_text(run_dir / "result.json"));
   const auto straight_rows = rows_of(run_dir / "capillary_timeseries.csv");
@@ -182,6 +196,26 @@ TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
   EXPECT_GT(straight_cells.size(), 10u);
   EXPECT_EQ(rows_of(run_dir / "cell0.pvd"), straight_cells);
   EXPECT_EQ(rows_of(run_dir / "fluid.pvd"), straight_fluid);
+}
+
+// A snapshot collection the resumed run cannot continue is bad input: one line naming it, exit 2,
+// and the interrupted run's files as they were.
+TEST(CapillaryResume, AMalformedSnapshotCollectionIsBadInput) {
+  const ScratchDirectory scratch;
+  const std::string settings = coarse_binary_settings();
+  const auto run_dir = scratch.path() / "run";
+  ASSERT_NO_FATAL_FAILURE(run_with_checkpoints(scratch, run_dir, settings));
+  const std::string truncated = rbcsim::testing::read_text(run_dir / "cell0.pvd").substr(0, 120);
+  rbcsim::testing::write_file(run_dir / "cell0.pvd", truncated);
+  const auto result_before = rbcsim::testing::read_text(run_dir / "result.json");
+
+  const auto resumed = rbcsim::testing::run_rbcsim(
+      "capillary --resume '" + run_dir.string() + "'" + settings, scratch.path());
+  EXPECT_EQ(resumed.exit_code, 2);
+  EXPECT_NE(resumed.err.find("cell0.pvd"), std::string::npos) << resumed.err;
+  EXPECT_EQ(std::count(resumed.err.begin(), resumed.err.end(), '\n'), 1) << resumed.err;
+  EXPECT_EQ(rbcsim::testing::read_text(run_dir / "cell0.pvd"), truncated);
+  EXPECT_EQ(rbcsim::testing::read_text(run_dir / "result.json"), result_before);
 }
 
 TEST(CapillaryResume, AMissingCheckpointIsBadInputAndLeavesNoFile) {

@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
@@ -13,6 +12,7 @@
 
 #include "config/config.hpp"
 #include "membrane/parameters.hpp"
+#include "support/files.hpp"
 
 namespace rbcsim::testing {
 
@@ -40,10 +40,6 @@ struct FixtureRun {
   // Merged into config.json (RFC 7386 merge patch), e.g. {"membrane": {"k_link_kBT": 3}}.
   nlohmann::json config_patch = nlohmann::json::object();
 };
-
-inline void write_file(const std::filesystem::path& file, const std::string& text) {
-  std::ofstream(file, std::ios::binary) << text;
-}
 
 inline std::filesystem::path write_run(const std::filesystem::path& directory,
                                        const FixtureRun& run) {
@@ -160,6 +156,9 @@ inline FixtureRun calibrate_run() {
         {"k_link_kBT", 7.0},
         {"k_area_kBT", 5.0}}},
       {"two_triangle", {{"bending_modulus_J", 2.05e-19}, {"k_bend_kBT", 50.0}}},
+      {"stretch_fit",
+       {{"k_link_kBT", 3.3},
+        {"comparison", {{"reference", "mills2004"}, {"rms_axial_um", 0.59}, {"point_count", 13}}}}},
       {"paper",
        {{"hexagonal", {{"E_s_uN_per_m", 29.85}, {"mu_uN_per_m", 10.15}, {"K_uN_per_m", 28.2}}},
         {"two_triangle", {{"bending_modulus_J", 2e-19}}}}}};

@@ -1,4 +1,4 @@
-// Reading what a test or the binary wrote: whole files as text or JSON.
+// Reading what a test or the binary wrote, whole files as text or JSON; writing a test's input.
 #pragma once
 
 #include <filesystem>
@@ -14,6 +14,10 @@ inline std::string read_text(const std::filesystem::path& file) {
   std::stringstream text;
   text << stream.rdbuf();
   return text.str();
+}
+
+inline void write_file(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream(file, std::ios::binary) << text;
 }
 
 // A JSON file the binary wrote (result.json, config.json, ...).
