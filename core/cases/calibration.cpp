@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "cases/named_table.hpp"
+#include "cases/stretch_output.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "mesh/inspection.hpp"
@@ -279,17 +280,11 @@ nlohmann::ordered_json stiffness_fit_json(const StiffnessFit& fit,
 
 nlohmann::ordered_json stretch_fit_json(const StretchCurveFit& fit) {
   const auto& best = fit.curve.best;
-  const auto& comparison = best.comparison;
   nlohmann::ordered_json section = {{"start_k_link_kBT", fit.curve.start_k_link_kBT},
                                     {"k_link_kBT", best.k_link_kBT}};
   section.update(moduli_json(fit.achieved));
   section.update({{"misfit", best.misfit},
-                  {"reference_forces", comparison.point_count},
-                  {"rms_axial_um", comparison.rms_axial_um.value_or(0.0)},
-                  {"rms_transverse_um", comparison.rms_transverse_um.value_or(0.0)},
-                  {"inside_error_bars", comparison.inside_error_bars},
-                  {"axial_inside_error_bar", comparison.axial_inside_error_bar},
-                  {"transverse_inside_error_bar", comparison.transverse_inside_error_bar},
+                  {"comparison", mills_comparison_json(best.comparison)},
                   {"curves", fit.curve.evaluations.size()}});
   return section;
 }

@@ -57,6 +57,16 @@ std::vector<double> stretch_fit_table_row(const StretchFitEvaluation& curve) {
           curve.wall_time_s};
 }
 
+nlohmann::ordered_json mills_comparison_json(const StretchComparison& comparison) {
+  return {{"reference", "mills2004"},
+          {"rms_axial_um", optional_number(comparison.rms_axial_um)},
+          {"rms_transverse_um", optional_number(comparison.rms_transverse_um)},
+          {"inside_error_bars", comparison.inside_error_bars},
+          {"axial_inside_error_bar", comparison.axial_inside_error_bar},
+          {"transverse_inside_error_bar", comparison.transverse_inside_error_bar},
+          {"point_count", comparison.point_count}};
+}
+
 nlohmann::ordered_json stretch_result_section(std::string_view mode,
                                               std::span<const std::string> force_terms,
                                               std::span<const StretchPoint> points,
@@ -84,14 +94,7 @@ nlohmann::ordered_json stretch_result_section(std::string_view mode,
   return {{"mode", mode},
           {"forces_terms", force_terms},
           {"points", point_list},
-          {"comparison",
-           {{"reference", "mills2004"},
-            {"rms_axial_um", optional_number(comparison.rms_axial_um)},
-            {"rms_transverse_um", optional_number(comparison.rms_transverse_um)},
-            {"inside_error_bars", comparison.inside_error_bars},
-            {"axial_inside_error_bar", comparison.axial_inside_error_bar},
-            {"transverse_inside_error_bar", comparison.transverse_inside_error_bar},
-            {"point_count", comparison.point_count}}}};
+          {"comparison", mills_comparison_json(comparison)}};
 }
 
 }  // namespace rbcsim::cases

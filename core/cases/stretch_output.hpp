@@ -1,6 +1,6 @@
 // What a stretch run writes (the run-directory contract): one VTK PolyData shape per force, the
 // rows of stretch.csv, and the "stretch" object of result.json (schemas/result.schema.json); and
-// the rows of the calibrate stretch fit's stretch_fit.csv.
+// the rows of the calibrate stretch fit's stretch_fit.csv and its comparison with the data.
 #pragma once
 
 #include <filesystem>
@@ -29,7 +29,12 @@ std::vector<double> stretch_table_row(const StretchPoint& point);
 std::vector<std::string> stretch_fit_table_columns();
 std::vector<double> stretch_fit_table_row(const StretchFitEvaluation& curve);
 
-// {"mode", "forces_terms", "points": [...], "comparison": {...}}.
+// A curve against Mills et al. (2004): {"reference", "rms_axial_um", "rms_transverse_um" (null
+// when no reference force is in range), "inside_error_bars", "axial_inside_error_bar",
+// "transverse_inside_error_bar", "point_count"}; the stretch's and the stretch fit's.
+nlohmann::ordered_json mills_comparison_json(const StretchComparison& comparison);
+
+// {"mode", "forces_terms", "points": [...], "comparison": mills_comparison_json}.
 nlohmann::ordered_json stretch_result_section(std::string_view mode,
                                               std::span<const std::string> force_terms,
                                               std::span<const StretchPoint> points,

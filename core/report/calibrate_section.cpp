@@ -20,6 +20,16 @@ std::string paper_value(const nlohmann::json* paper, const std::string& test,
   return value == paper->end() || value->is_object() ? "—" : format_cell(*value);
 }
 
+// A group of quantities inside a test (the stretch fit's comparison with Mills), one row each,
+// named "<group>: <quantity>"; the paper has no such values.
+void add_group_rows(Table& table, const std::string& test, const std::string& group,
+                    const nlohmann::json& values) {
+  for (const auto& [quantity, value] : values.items()) {
+    table.rows.push_back(
+        {test, key_title(group) + ": " + key_title(quantity), format_cell(value), "—"});
+  }
+}
+
 Table calibration_table(const RunDirectory& run, const std::string& label) {
   const auto& calibrate = run.section().object();
   const auto paper = calibrate.find(kPaperKey);
@@ -33,6 +43,10 @@ Table calibration_table(const RunDirectory& run, const std::string& label) {
       continue;
     }
     for (const auto& [quantity, value] : values.items()) {
+      if (value.is_object()) {
+        add_group_rows(table, test, quantity, value);
+        continue;
+      }
       table.rows.push_back({test, key_title(quantity), format_cell(value),
                             paper_value(paper_values, test, quantity)});
     }

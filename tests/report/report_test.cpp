@@ -157,6 +157,10 @@ TEST_F(ReportOfStandardRuns, CalibrationTableShowsOwnAndPaperValues) {
             std::string::npos);
   // A quantity the paper object does not give.
   EXPECT_NE(markdown.find("| hexagonal | k\\_link (kBT) | 7 | — |"), std::string::npos);
+  // A group inside a test: one row per quantity, not the group's JSON.
+  EXPECT_NE(markdown.find("| stretch\\_fit | comparison: rms\\_axial (µm) | 0.59 | — |"),
+            std::string::npos)
+      << markdown;
 }
 
 TEST_F(ReportOfStandardRuns, MarkdownHasTheHeadlineTablesButNoFigures) {

@@ -1,10 +1,13 @@
 // A JSON Schema check for the tests: the keywords the shipped schemas use (type, enum, const,
-// minimum, required, properties, additionalProperties, items, allOf, if/then), which is enough to
+// minimum, required, properties, additionalProperties, items, allOf, if/then, and $ref to a
+// definition in the same document, "#/$defs/<name>"), which is enough to
 // hold a command's output to schemas/*.schema.json. Returns the problems found, each as
 // "<JSON pointer>: <what>"; empty when the document conforms.
 #pragma once
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -25,11 +28,17 @@ inline bool has_type(const json& value, const std::string& type) {
   return false;
 }
 
-inline void check(const json& value, const json& schema, const std::string& at,
-                  std::vector<std::string>& problems);
+// The document being checked against and its root schema, which "$ref"s point into.
+struct Checker {
+  const json& root;
+  std::vector<std::string>& problems;
+};
+
+inline void check(const json& value, const json& schema, const std::string& at, Checker& checker);
 
 inline void check_object(const json& value, const json& schema, const std::string& at,
-                         std::vector<std::string>& problems) {
+                         Checker& checker) {
+  auto& problems = checker.problems;
   for (const auto& name : schema.value("required", json::array())) {
     if (!value.contains(name.get<std::string>()))
       problems.push_back(at + ": missing " + name.dump());
@@ -37,17 +46,23 @@ inline void check_object(const json& value, const json& schema, const std::strin
   const auto properties = schema.value("properties", json::object());
   for (const auto& [key, member] : value.items()) {
     if (properties.contains(key)) {
-      check(member, properties[key], at + "/" + key, problems);
+      check(member, properties[key], at + "/" + key, checker);
     } else if (schema.contains("additionalProperties")) {
       const auto& extra = schema["additionalProperties"];
       if (extra.is_boolean() && !extra.get<bool>()) problems.push_back(at + ": unexpected " + key);
-      if (extra.is_object()) check(member, extra, at + "/" + key, problems);
+      if (extra.is_object()) check(member, extra, at + "/" + key, checker);
     }
   }
 }
 
-inline void check(const json& value, const json& schema, const std::string& at,
-                  std::vector<std::string>& problems) {
+inline void check(const json& value, const json& schema, const std::string& at, Checker& checker) {
+  auto& problems = checker.problems;
+  if (schema.contains("$ref")) {
+    const auto ref = schema["$ref"].get<std::string>();
+    // Only references into the same document; anything else would be a typo in the schema.
+    if (ref.rfind("#/", 0) != 0) throw std::invalid_argument("unsupported $ref " + ref);
+    check(value, checker.root.at(json::json_pointer(ref.substr(1))), at, checker);
+  }
   if (schema.contains("type")) {
     const auto types = schema["type"].is_array() ? schema["type"] : json::array({schema["type"]});
     bool matched = false;
@@ -65,17 +80,18 @@ inline void check(const json& value, const json& schema, const std::string& at,
       value.get<double>() < schema["minimum"].get<double>()) {
     problems.push_back(at + ": below the minimum");
   }
-  if (value.is_object()) check_object(value, schema, at, problems);
+  if (value.is_object()) check_object(value, schema, at, checker);
   if (value.is_array() && schema.contains("items")) {
     for (std::size_t i = 0; i < value.size(); ++i) {
-      check(value[i], schema["items"], at + "/" + std::to_string(i), problems);
+      check(value[i], schema["items"], at + "/" + std::to_string(i), checker);
     }
   }
-  for (const auto& part : schema.value("allOf", json::array())) check(value, part, at, problems);
+  for (const auto& part : schema.value("allOf", json::array())) check(value, part, at, checker);
   if (schema.contains("if")) {
     std::vector<std::string> condition;
-    check(value, schema["if"], at, condition);
-    if (condition.empty() && schema.contains("then")) check(value, schema["then"], at, problems);
+    Checker condition_checker{checker.root, condition};
+    check(value, schema["if"], at, condition_checker);
+    if (condition.empty() && schema.contains("then")) check(value, schema["then"], at, checker);
   }
 }
 
@@ -84,7 +100,8 @@ inline void check(const json& value, const json& schema, const std::string& at,
 inline std::vector<std::string> schema_problems(const nlohmann::json& document,
                                                 const nlohmann::json& schema) {
   std::vector<std::string> problems;
-  schema_detail::check(document, schema, "", problems);
+  schema_detail::Checker checker{schema, problems};
+  schema_detail::check(document, schema, "", checker);
   return problems;
 }
 
