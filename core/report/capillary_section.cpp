@@ -1,9 +1,10 @@
 // One cell through a stenosed capillary (DESIGN.md §4 capillary): deformation index against
-// time for every morphology (paper Fig. 13), transit times as bars, and whether their order is
-// the paper's.
+// time for every morphology (paper Fig. 13), transit times as bars, whether their order is the
+// paper's, and whether F_ad and F_tc lower the peak DI as in the paper's Fig. 13.
 #include <algorithm>
 #include <array>
 
+#include "membrane/parameters.hpp"
 #include "report/markup.hpp"
 #include "report/sections.hpp"
 #include "report/svg_plot.hpp"
@@ -32,19 +33,25 @@ double transit_time_s(const RunDirectory& run) {
   return run.section().at("transit_time_s").number();
 }
 
+// The tube the run went through: a built-in geometry's name or the wall file's.
+std::string geometry_of(const RunDirectory& run) { return run.section().at("geometry").string(); }
+
 bool is_in_paper_order(const std::string& morphology) {
   return std::find(kPaperTransitOrder.begin(), kPaperTransitOrder.end(), morphology) !=
          kPaperTransitOrder.end();
 }
 
-// The morphologies of `runs` (one run each) by increasing transit time, against the paper.
-nlohmann::json transit_order(const std::string& terms, RunList runs, Section& section) {
+// The morphologies of `runs` (one run each, the same terms and tube) by increasing transit
+// time, against the paper.
+nlohmann::json transit_order(RunList runs, Section& section) {
+  const std::string terms = runs.front()->terms;
+  const std::string geometry = geometry_of(*runs.front());
   std::stable_sort(runs.begin(), runs.end(), [](const RunDirectory* a, const RunDirectory* b) {
     return transit_time_s(*a) < transit_time_s(*b);
   });
   std::vector<std::string> order;
   std::vector<std::string> known_order;
-  std::string sentence = "Transit time order, " + terms + ": ";
+  std::string sentence = "Transit time order, " + terms + ", " + geometry + ": ";
   for (const auto* run : runs) {
     order.push_back(run->morphology);
     if (is_in_paper_order(run->morphology)) known_order.push_back(run->morphology);
@@ -61,28 +68,89 @@ nlohmann::json transit_order(const std::string& terms, RunList runs, Section& se
       Paragraph{sentence + ". The paper finds discocyte < echinocyte III < stomatocyte II: " +
                 (agrees ? "same order." : "different order.")});
   return {{"terms", terms},
+          {"geometry", geometry},
           {"order", order},
           {"paper_order", paper_order},
           {"agrees_with_paper", agrees}};
 }
 
-// Per set of membrane terms in which every morphology ran once and at least two ran: the order.
+// The runs' tubes, each once, in the order first met.
+std::vector<std::string> distinct_geometries(const RunList& runs) {
+  std::vector<std::string> geometries;
+  for (const auto* run : runs) {
+    const auto geometry = geometry_of(*run);
+    if (std::find(geometries.begin(), geometries.end(), geometry) == geometries.end()) {
+      geometries.push_back(geometry);
+    }
+  }
+  return geometries;
+}
+
+// Per set of membrane terms and tube in which every morphology ran once and at least two ran: the
+// order (transit times through different tubes are not compared).
 nlohmann::json transit_orders(const RunList& runs, Section& section) {
   auto orders = nlohmann::json::array();
-  for (const auto& terms : distinct(runs, &RunDirectory::terms)) {
-    RunList group;
-    std::vector<std::string> morphologies;
-    for (const auto* run : runs) {
-      if (run->terms != terms) continue;
-      group.push_back(run);
-      morphologies.push_back(run->morphology);
+  for (const auto& geometry : distinct_geometries(runs)) {
+    for (const auto& terms : distinct(runs, &RunDirectory::terms)) {
+      RunList group;
+      std::vector<std::string> morphologies;
+      for (const auto* run : runs) {
+        if (run->terms != terms || geometry_of(*run) != geometry) continue;
+        group.push_back(run);
+        morphologies.push_back(run->morphology);
+      }
+      std::sort(morphologies.begin(), morphologies.end());
+      const bool one_run_each =
+          std::adjacent_find(morphologies.begin(), morphologies.end()) == morphologies.end();
+      if (group.size() >= 2 && one_run_each) orders.push_back(transit_order(group, section));
     }
-    std::sort(morphologies.begin(), morphologies.end());
-    const bool one_run_each =
-        std::adjacent_find(morphologies.begin(), morphologies.end()) == morphologies.end();
-    if (group.size() >= 2 && one_run_each) orders.push_back(transit_order(terms, group, section));
   }
   return orders;
+}
+
+double peak_deformation_index(const RunDirectory& run) {
+  return run.section().at("peak_deformation_index").number();
+}
+
+// The paper's Fig. 13: with F_ad and F_tc the cell's DI stays lower than without them. For each
+// run with all six terms, against every run of the same cell through the same tube with other
+// terms: the two peak DIs.
+nlohmann::json peak_deformation_by_terms(const RunList& runs, Section& section) {
+  const std::string all_terms = describe_terms(membrane::all_force_term_names());
+  auto comparisons = nlohmann::json::array();
+  for (const auto* with : runs) {
+    if (with->terms != all_terms) continue;
+    for (const auto* without : runs) {
+      if (without->terms == all_terms || without->morphology != with->morphology ||
+          geometry_of(*without) != geometry_of(*with)) {
+        continue;
+      }
+      const double peak_with = peak_deformation_index(*with);
+      const double peak_without = peak_deformation_index(*without);
+      const bool lower = peak_with < peak_without;
+      section.blocks.emplace_back(
+          Paragraph{"Peak DI, " + with->morphology + ", " + geometry_of(*with) + ": " +
+                    format_significant(peak_with) + " with all six terms, " +
+                    format_significant(peak_without) + " " + without->terms + " (" +
+                    (lower ? "lower" : "not lower") +
+                    " with F_ad and F_tc; the paper's Fig. 13 has it lower with them)."});
+      comparisons.push_back({{"morphology", with->morphology},
+                             {"geometry", geometry_of(*with)},
+                             {"terms", without->terms},
+                             {"peak_deformation_index", peak_without},
+                             {"all_six_peak_deformation_index", peak_with},
+                             {"lower_with_all_six", lower}});
+    }
+  }
+  return comparisons;
+}
+
+// "morphology, terms", and the tube when the runs went through more than one.
+std::vector<std::string> capillary_labels(const RunList& runs) {
+  if (distinct_geometries(runs).size() <= 1) return distinct_labels(runs, morphology_and_terms);
+  return distinct_labels(runs, [](const RunDirectory& run) {
+    return morphology_and_terms(run) + ", " + geometry_of(run);
+  });
 }
 
 }  // namespace
@@ -90,7 +158,7 @@ nlohmann::json transit_orders(const RunList& runs, Section& section) {
 Section build_capillary_section(const RunList& all_runs) {
   Section section{"capillary", "Capillary transit", {}, {}};
   const auto runs = succeeded_runs(all_runs, section);
-  const auto labels = distinct_labels(runs, morphology_and_terms);
+  const auto labels = capillary_labels(runs);
 
   svg::LinePlot deformation{"Deformation index vs time", "time (s)", "deformation index DI", {}};
   svg::BarChart transit{"Transit time through the narrow section", "transit time (s)", {}};
@@ -112,9 +180,12 @@ Section build_capillary_section(const RunList& all_runs) {
   section.blocks.emplace_back(
       Figure{svg::render_bar_chart(transit), "Time to cross the narrow section of the capillary."});
   const auto orders = transit_orders(runs, section);
+  const auto peaks = peak_deformation_by_terms(runs, section);
   section.blocks.emplace_back(table_of_objects("Capillary results", "run", rows));
   section.blocks.emplace_back(headline_table(runs, labels));
-  section.summary = {{"runs", run_summaries}, {"transit_time_order", orders}};
+  section.summary = {{"runs", run_summaries},
+                     {"transit_time_order", orders},
+                     {"peak_deformation_index_by_terms", peaks}};
   return section;
 }
 

@@ -4,11 +4,11 @@
 
 namespace {
 
+using rbcsim::format_significant;
 using rbcsim::report::describe_key;
 using rbcsim::report::escape_markdown;
 using rbcsim::report::escape_xml;
 using rbcsim::report::format_cell;
-using rbcsim::format_significant;
 
 TEST(EscapeXml, ReplacesTheFiveMarkupCharacters) {
   EXPECT_EQ(escape_xml("a<b>&\"c'"), "a&lt;b&gt;&amp;&quot;c&#39;");

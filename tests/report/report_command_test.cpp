@@ -36,7 +36,7 @@ TEST(ReportCommand, WritesTheReportAndSummaries) {
                             (output / "summary.json").string() + "\n");
   EXPECT_NE(read_text(output / "report.html").find("<svg"), std::string::npos);
   EXPECT_NE(read_text(output / "summary.md").find("## Capillary transit"), std::string::npos);
-  EXPECT_EQ(nlohmann::json::parse(read_text(output / "summary.json")).at("run_count"), 11);
+  EXPECT_EQ(nlohmann::json::parse(read_text(output / "summary.json")).at("run_count"), 13);
 
   const auto json =
       run_rbcsim(arguments + " --output " + quoted(output) + " --json", scratch.path());

@@ -105,8 +105,11 @@ TEST_F(ReportOfStandardRuns, ShearHasALengthPlotPerMorphologyWithEachTermSet) {
 }
 
 TEST_F(ReportOfStandardRuns, CapillaryHasDeformationOverTimeAndTransitBars) {
-  const std::vector<std::string> runs{"discocyte, all six", "echinocyte-III, all six",
-                                      "stomatocyte-II, all six"};
+  // Runs through two tubes: each label names its tube.
+  const std::vector<std::string> runs{
+      "discocyte, all six, paper-morphology", "discocyte, all six, paper-validation",
+      "discocyte, without area_difference and total_curvature, paper-validation",
+      "echinocyte-III, all six, paper-morphology", "stomatocyte-II, all six, paper-morphology"};
   const auto deformation = figure("Deformation index vs time");
   EXPECT_EQ(page_.labels("series", deformation), runs);
   // 41 samples of the time series, one polyline of 41 points per run.
@@ -120,8 +123,8 @@ TEST_F(ReportOfStandardRuns, CapillaryHasDeformationOverTimeAndTransitBars) {
 
 TEST_F(ReportOfStandardRuns, SummaryJsonHasTheRunsNumbers) {
   const auto& summary = documents_.summary;
-  EXPECT_EQ(summary.at("run_count"), 11);
-  ASSERT_EQ(summary.at("runs").size(), 11u);
+  EXPECT_EQ(summary.at("run_count"), 13);
+  ASSERT_EQ(summary.at("runs").size(), 13u);
   EXPECT_EQ(summary.at("runs")[0].at("command"), "calibrate");
   EXPECT_EQ(summary.at("runs")[0].at("wall_time_s"), 2.5);
 
@@ -141,12 +144,22 @@ TEST_F(ReportOfStandardRuns, SummaryJsonHasTheRunsNumbers) {
   EXPECT_EQ(shear[0].at("shear").at("rates").back().at("length_um"), 11.0);
 
   const auto& capillary = summary.at("capillary");
-  EXPECT_EQ(capillary.at("runs")[2].at("capillary").at("transit_time_s"), 1.5e-3);
+  EXPECT_EQ(capillary.at("runs")[4].at("morphology"), "stomatocyte-II");
+  EXPECT_EQ(capillary.at("runs")[4].at("capillary").at("transit_time_s"), 1.5e-3);
+  // One order: the validation tube's lone discocyte is neither ordered nor mixed into it.
   const auto& order = capillary.at("transit_time_order");
   ASSERT_EQ(order.size(), 1u);
+  EXPECT_EQ(order[0].at("geometry"), "paper-morphology");
   EXPECT_EQ(order[0].at("order"),
             (std::vector<std::string>{"discocyte", "echinocyte-III", "stomatocyte-II"}));
   EXPECT_TRUE(order[0].at("agrees_with_paper"));
+  // The discocyte through the validation tube with and without F_ad/F_tc: peak DI 2.0 and 2.1.
+  const auto& peaks = capillary.at("peak_deformation_index_by_terms");
+  ASSERT_EQ(peaks.size(), 1u);
+  EXPECT_EQ(peaks[0].at("geometry"), "paper-validation");
+  EXPECT_EQ(peaks[0].at("all_six_peak_deformation_index"), 2.0);
+  EXPECT_EQ(peaks[0].at("peak_deformation_index"), 2.1);
+  EXPECT_TRUE(peaks[0].at("lower_with_all_six"));
 }
 
 TEST_F(ReportOfStandardRuns, CalibrationTableShowsOwnAndPaperValues) {
@@ -171,10 +184,17 @@ TEST_F(ReportOfStandardRuns, MarkdownHasTheHeadlineTablesButNoFigures) {
       markdown.find("| discocyte, all six, quasi-static | 11 | 13 | mills2004 | 0.31 | 0.25 |"),
       std::string::npos)
       << markdown;
-  EXPECT_NE(markdown.find("Transit time order, all six: discocyte (0.001 s) \\< echinocyte-III "
-                          "(0.0012 s) \\< stomatocyte-II (0.0015 s). The paper finds discocyte \\< "
-                          "echinocyte III \\< stomatocyte II: same order."),
-            std::string::npos);
+  EXPECT_NE(
+      markdown.find(
+          "Transit time order, all six, paper-morphology: discocyte (0.001 s) \\< echinocyte-III "
+          "(0.0012 s) \\< stomatocyte-II (0.0015 s). The paper finds discocyte \\< "
+          "echinocyte III \\< stomatocyte II: same order."),
+      std::string::npos);
+  EXPECT_NE(markdown.find("Peak DI, discocyte, paper-validation: 2 with all six terms, 2.1 without "
+                          "area\\_difference and total\\_curvature (lower with F\\_ad and "
+                          "F\\_tc; the paper's Fig. 13 has it lower with them)."),
+            std::string::npos)
+      << markdown;
 }
 
 TEST_F(ReportOfStandardRuns, RunsTableListsEveryRunWithItsMetadata) {
@@ -192,7 +212,7 @@ TEST_F(ReportOfStandardRuns, RunsTableListsEveryRunWithItsMetadata) {
             std::string::npos)
       << markdown;
   // The full configuration of each run, folded, with the run's metadata.
-  EXPECT_EQ(page_.find("details").size(), 11u);
+  EXPECT_EQ(page_.find("details").size(), 13u);
   const auto configuration = page_.find("details")[2];
   std::vector<std::string> cells;
   for (const auto i : page_.find("td", "", static_cast<long>(configuration))) {

@@ -125,7 +125,8 @@ inline FixtureRun shear_run(const std::string& morphology, const std::vector<std
 
 // DI rises from 1 to `peak` at the throat (t = transit_time_s) and falls back: a Gaussian bump.
 inline FixtureRun capillary_run(const std::string& morphology, double transit_time_s,
-                                double peak_deformation_index) {
+                                double peak_deformation_index,
+                                const std::string& geometry = "paper-morphology") {
   FixtureRun run{.command = "capillary", .morphology = morphology};
   run.time_series_csv = "time_s,centroid_x_um,velocity_x_m_per_s,deformation_index\n";
   for (int step = 0; step <= 40; ++step) {
@@ -135,13 +136,22 @@ inline FixtureRun capillary_run(const std::string& morphology, double transit_ti
                            std::to_string(0.04) + "," +
                            std::to_string(1 + (peak_deformation_index - 1) * bump) + "\n";
   }
-  run.section = {{"geometry", "paper-b"},
+  run.section = {{"geometry", geometry},
                  {"transit_time_s", transit_time_s},
                  {"peak_deformation_index", peak_deformation_index},
                  {"final_deformation_index", 1.0},
                  {"reynolds_number", 0.04},
                  {"capillary_number", 0.1}};
   run.headline = {{"transit_time_s", transit_time_s}};
+  return run;
+}
+
+inline FixtureRun capillary_run_with_terms(const std::string& morphology,
+                                           const std::vector<std::string>& forces,
+                                           double peak_deformation_index,
+                                           const std::string& geometry) {
+  auto run = capillary_run(morphology, 0.6e-3, peak_deformation_index, geometry);
+  run.forces = forces;
   return run;
 }
 
@@ -168,7 +178,8 @@ inline FixtureRun calibrate_run() {
 
 // The set of runs the report is made for: a calibration, stretching with and without the two new
 // terms, shear sweeps of the three morphologies (two of them also without the new terms, as in
-// the paper's Figs. 10-11) and capillary transits of the three morphologies in the paper's order.
+// the paper's Figs. 10-11), capillary transits of the three morphologies in the paper's order and
+// the discocyte's through the validation tube, with and without the two new terms.
 inline std::vector<std::filesystem::path> write_standard_runs(const std::filesystem::path& root) {
   return {
       write_run(root / "calibrate", calibrate_run()),
@@ -182,6 +193,10 @@ inline std::vector<std::filesystem::path> write_standard_runs(const std::filesys
       write_run(root / "capillary-disc", capillary_run("discocyte", 1.0e-3, 1.45)),
       write_run(root / "capillary-echi", capillary_run("echinocyte-III", 1.2e-3, 1.35)),
       write_run(root / "capillary-stom", capillary_run("stomatocyte-II", 1.5e-3, 1.25)),
+      write_run(root / "capillary-disc-validation",
+                capillary_run("discocyte", 0.6e-3, 2.0, "paper-validation")),
+      write_run(root / "capillary-disc-validation-four",
+                capillary_run_with_terms("discocyte", four_terms(), 2.1, "paper-validation")),
   };
 }
 
