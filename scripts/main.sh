@@ -11,8 +11,10 @@
 #      and the curve with the fitted parameters;
 #   4. shear: a short sweep (0, 1000, 2000 1/s) of the discocyte with and without F_ad/F_tc, on the
 #      coarse setting of README.md (642 vertices, dx 0.75 um, 10 strains: not yet steady);
-#   5. capillary: the three morphologies through the paper's three-morphology tube (6.8 um throat,
-#      Re 0.04, dx 0.5 um) with 642-vertex cells and Table 2's moduli (k_link, k_area x2; README.md);
+#   5. capillary, 642-vertex cells with Table 2's moduli (k_link, k_area x2; README.md) on the
+#      paper's dx 0.5 um: the discocyte through the validation tube (6.75 um throat, Re 0.0643)
+#      with and without F_ad/F_tc (the paper's Fig. 13), and the three morphologies through the
+#      three-morphology tube (6.8 um throat, Re 0.04);
 #   6. report: out/report/report.html, summary.md, summary.json over every run above.
 # How far each setting is from the paper's is in README.md ("The main job").
 set -euo pipefail
@@ -59,24 +61,31 @@ shear_setting=(--set mesh.subdivisions=3 --set lattice.spacing_um=0.75 --set mem
 "$rbcsim" shear "${shear_setting[@]}" --set membrane.forces=link,bend,area,volume \
   --output "$(fresh_run shear-discocyte-four-terms)"
 
-stage "capillary (three morphologies, the paper's three-morphology tube and 6.8 um throat)"
-# 642-vertex cells on the paper's dx = 0.5 um at Re 0.04, with Table 2's moduli: their edges are
-# twice as long as the 2562-vertex cell's, and both the link and the local-area modulus go as
-# k / L0 (the hexagonal patch test of `rbcsim calibrate`), so k_link and k_area are doubled. Edges
-# about one lattice spacing long are what lets the cell through: the 2562-vertex cell on this
-# lattice (edges dx / 2) fails at the area limit before the throat (README.md, capillary). The
-# vertex cap is 4 x 50 pN: a vertex here carries four paper vertices' share. One thread per run,
-# the three runs side by side.
-capillary_setting=(--geometry paper-morphology --set mesh.subdivisions=3
-                   --set membrane.k_area_kBT=10 --set membrane.vertex_force_cap_pN=200
-                   --set output.fluid_interval_s=0 --threads 1)
+stage "capillary (the validation tube: discocyte with and without F_ad/F_tc; three morphologies)"
+# 642-vertex cells on the paper's dx = 0.5 um with Table 2's moduli: their edges are twice as long
+# as the 2562-vertex cell's, and both the link and the local-area modulus go as k / L0 (the
+# hexagonal patch test of `rbcsim calibrate`), so k_link and k_area are doubled. Edges about one
+# lattice spacing long are what lets the cell through: the 2562-vertex cell on this lattice (edges
+# dx / 2) fails at the area limit before the throat (README.md, capillary). The vertex cap is
+# 4 x 50 pN: a vertex here carries four paper vertices' share. The paper's validation tube (§3.3,
+# Fig. 13: 31.2 um, 6.75 um throat, Re 0.0643) with the discocyte, with and without F_ad/F_tc; then
+# the three morphologies through the three-morphology tube (§3.4: 42 um, 6.8 um throat, Re 0.04).
+# One thread per run, the five runs side by side.
+cell_setting=(--set mesh.subdivisions=3 --set membrane.k_area_kBT=10
+              --set membrane.vertex_force_cap_pN=200 --set output.fluid_interval_s=0 --threads 1)
 declare -A capillary_k_link=([discocyte]=14 [echinocyte-III]=22 [stomatocyte-II]=22)
 capillary_pids=()
-for morphology in discocyte echinocyte-III stomatocyte-II; do
-  "$rbcsim" capillary "${capillary_setting[@]}" --morphology "$morphology" \
-    --set membrane.k_link_kBT="${capillary_k_link[$morphology]}" \
-    --output "$(fresh_run "capillary-$morphology")" > "$output_dir/capillary-$morphology.txt" &
+run_capillary() {  # run name, then rbcsim capillary's options
+  "$rbcsim" capillary "${cell_setting[@]}" "${@:2}" --output "$(fresh_run "$1")" \
+    > "$output_dir/$1.txt" &
   capillary_pids+=($!)
+}
+run_capillary capillary-validation-discocyte --set membrane.k_link_kBT=14
+run_capillary capillary-validation-discocyte-four-terms --set membrane.k_link_kBT=14 \
+  --set membrane.forces=link,bend,area,volume
+for morphology in discocyte echinocyte-III stomatocyte-II; do
+  run_capillary "capillary-$morphology" --geometry paper-morphology --morphology "$morphology" \
+    --set membrane.k_link_kBT="${capillary_k_link[$morphology]}"
 done
 for pid in "${capillary_pids[@]}"; do wait "$pid"; done
 cat "$output_dir"/capillary-*.txt
@@ -85,5 +94,6 @@ stage "report"
 "$rbcsim" report "$output_dir"/{calibrate,calibrate-stretch} \
   "$output_dir"/{stretch-discocyte,stretch-discocyte-four-terms,stretch-discocyte-fitted} \
   "$output_dir"/{shear-discocyte,shear-discocyte-four-terms} \
+  "$output_dir"/capillary-validation-discocyte{,-four-terms} \
   "$output_dir"/capillary-{discocyte,echinocyte-III,stomatocyte-II} -o "$output_dir/report"
 stage "main: results in $output_dir, report in $output_dir/report/report.html"
