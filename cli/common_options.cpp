@@ -45,7 +45,10 @@ void add_common_options(CLI::App* command, CommonOptions& options) {
       ->check(CLI::PositiveNumber);
   command->add_flag("--json", options.json, "Print the machine-readable result on stdout");
   auto* quiet = command->add_flag("--quiet", options.quiet, "Print only errors");
-  command->add_flag("--verbose", options.verbose, "Print more detail")->excludes(quiet);
+  command
+      ->add_flag("--verbose", options.verbose,
+                 "Print more detail; progress lines on stderr also when it is not a terminal")
+      ->excludes(quiet);
 }
 
 CheckpointInterval parse_checkpoint_interval(std::string_view text) {

@@ -154,14 +154,22 @@ void wire_checkpoints_in(const std::filesystem::path& subdirectory,
 }
 
 Progress::Progress(const CommonOptions& options)
-    : enabled_(!options.quiet && isatty(STDERR_FILENO) == 1) {}
+    : terminal_(!options.quiet && isatty(STDERR_FILENO) == 1),
+      log_(!terminal_ && options.verbose) {}
 
 void Progress::update(const std::string& line) const {
-  if (enabled_) std::cerr << "\r\033[K" << line << std::flush;
+  if (terminal_) std::cerr << "\r\033[K" << line << std::flush;
+  if (!log_) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (last_logged_ && std::chrono::duration<double>(now - *last_logged_).count() < kLogIntervalS) {
+    return;
+  }
+  last_logged_ = now;
+  std::cerr << line << '\n' << std::flush;
 }
 
 void Progress::done() const {
-  if (enabled_) std::cerr << "\r\033[K" << std::flush;
+  if (terminal_) std::cerr << "\r\033[K" << std::flush;
 }
 
 }  // namespace rbcsim::cli

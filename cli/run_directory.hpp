@@ -11,8 +11,10 @@
 // Every file is written atomically (io/atomic_file.hpp).
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -77,17 +79,22 @@ void wire_checkpoints_in(const std::filesystem::path& subdirectory,
 // The SHA-256 of the resolved config: what a checkpoint and a resume must agree on.
 std::string config_fingerprint(const config::Config& config);
 
-// Progress lines on stderr, only when stderr is a terminal and --quiet is not given (DESIGN.md
-// §1: results go to files and stdout, so pipelines never see progress).
+// Progress on stderr (DESIGN.md §1: results go to files and stdout, so pipelines never see
+// progress). On a terminal, unless --quiet: one line, overwritten. Otherwise only with --verbose,
+// for runs of hours logged to a file: whole lines, the first at once and then at most one per
+// kLogIntervalS (a capillary run updates every kProgressIntervalSteps steps).
 class Progress {
  public:
+  static constexpr double kLogIntervalS = 30.0;
+
   explicit Progress(const CommonOptions& options);
-  // Overwrites the current line; done() ends it.
   void update(const std::string& line) const;
-  void done() const;
+  void done() const;  // ends the terminal's line
 
  private:
-  bool enabled_ = false;
+  bool terminal_ = false;
+  bool log_ = false;
+  mutable std::optional<std::chrono::steady_clock::time_point> last_logged_;
 };
 
 }  // namespace rbcsim::cli

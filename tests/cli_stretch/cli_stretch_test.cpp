@@ -22,6 +22,25 @@ using rbcsim::testing::ScratchDirectory;
 
 constexpr const char* kCoarseCell = "--set mesh.subdivisions=2 ";
 
+// A long run logged to a file asks for progress with --verbose: whole lines on stderr (the first
+// at once, then at most one per 30 s), never on stdout.
+TEST(CliStretch, VerboseLogsProgressLinesWhenStderrIsNotATerminal) {
+  const ScratchDirectory scratch;
+  const std::string run = std::string("stretch ") + kCoarseCell + "--forces 0,5 --threads 1 ";
+  const auto verbose =
+      run_rbcsim(run + "--verbose --json --output '" + (scratch.path() / "verbose").string() + "'",
+                 scratch.path());
+  ASSERT_EQ(verbose.exit_code, 0) << verbose.err;
+  EXPECT_EQ(verbose.err.rfind("stretch: 1/2 forces, F = 0 pN, ", 0), 0u) << verbose.err;
+  EXPECT_EQ(verbose.err.find('\r'), std::string::npos);
+  EXPECT_EQ(verbose.err.back(), '\n');
+  EXPECT_TRUE(nlohmann::json::accept(verbose.out)) << verbose.out;
+  const auto plain = run_rbcsim(
+      run + "--json --output '" + (scratch.path() / "plain").string() + "'", scratch.path());
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_EQ(plain.err, "");
+}
+
 TEST(CliStretch, WritesTheRunDirectoryAndPrintsItsResultAsJson) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
