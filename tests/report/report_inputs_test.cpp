@@ -239,4 +239,19 @@ TEST(ReportInputs, BadCapillaryTimeSeriesIsNamed) {
   EXPECT_EQ(report_error({run}), csv.string() + ": no such file");
 }
 
+// The peak-DI comparison is the paper's Fig. 13 claim about F_ad and F_tc: a run without some
+// other term is not compared with the six-term one.
+TEST(ReportInputs, PeakDeformationIsComparedOnlyWithoutTheTwoNewTerms) {
+  rbcsim::testing::ScratchDirectory scratch;
+  const auto six = rbcsim::testing::capillary_run("discocyte", 1e-3, 2.0);
+  auto without_bend = rbcsim::testing::capillary_run("discocyte", 1e-3, 2.2);
+  without_bend.forces = {"link", "area", "volume", "area_difference", "total_curvature"};
+  const auto documents = build_report(
+      read_run_directories({write_run(scratch.path() / "six", six),
+                            write_run(scratch.path() / "without-bend", without_bend)}));
+  EXPECT_EQ(documents.summary.at("capillary").at("peak_deformation_index_by_terms"),
+            nlohmann::json::array());
+  EXPECT_EQ(documents.markdown.find("Peak DI"), std::string::npos);
+}
+
 }  // namespace
