@@ -95,7 +95,19 @@ nlohmann::ordered_json headline(const cases::Calibration& calibration) {
   return numbers;
 }
 
-// One block per patch test: quantity, rbcsim's value, the paper's.
+// One row of a block: a number as such, a string (a reference's name) or null ("-") as text.
+void print_quantity(const std::string& name, const nlohmann::ordered_json& value,
+                    const std::string& paper_value) {
+  if (value.is_number()) {
+    std::printf("  %-32s %14.6g %14s\n", name.c_str(), value.get<double>(), paper_value.c_str());
+    return;
+  }
+  const std::string text = value.is_string() ? value.get<std::string>() : "-";
+  std::printf("  %-32s %14s %14s\n", name.c_str(), text.c_str(), paper_value.c_str());
+}
+
+// One block per patch test: quantity, rbcsim's value, the paper's; a group of quantities inside a
+// test (the stretch fit's comparison with Mills) under its name, indented.
 void print_table(const nlohmann::ordered_json& result, const cases::Calibration& calibration,
                  const RunDirectory& directory) {
   const auto& section = result["calibrate"];
@@ -107,12 +119,18 @@ void print_table(const nlohmann::ordered_json& result, const cases::Calibration&
     std::printf("\n%-34s %14s %14s\n", test.c_str(), "rbcsim", "paper");
     const auto paper_test = paper.find(test);
     for (const auto& [quantity, value] : values.items()) {
+      if (value.is_object()) {
+        std::printf("  %s\n", quantity.c_str());
+        for (const auto& [member, member_value] : value.items()) {
+          print_quantity("  " + member, member_value, "-");
+        }
+        continue;
+      }
       std::string paper_value = "-";
       if (paper_test != paper.end() && paper_test->contains(quantity)) {
         paper_value = format_number((*paper_test)[quantity].get<double>());
       }
-      std::printf("  %-32s %14.6g %14s\n", quantity.c_str(), value.get<double>(),
-                  paper_value.c_str());
+      print_quantity(quantity, value, paper_value);
     }
   }
   if (calibration.stretch) {

@@ -62,19 +62,23 @@ TEST(CliCalibrate, WritesARunDirectoryWhoseParametersReachTheTargets) {
   EXPECT_FALSE(measured.contains("hexagonal_fit"));
 }
 
-// The stretch fit on the coarse cell over Mills' first four forces (a second): its result against
-// the schema, the curves it ran, and parameters.json, which carries the fitted k_link and the
-// contact it was fitted under, so `rbcsim stretch --config` with it runs the fitted curve.
+// The stretch fit on the coarse cell over Mills' first four forces (a second): its table, its
+// result against the schema, the curves it ran, and parameters.json, which carries the fitted
+// k_link and the contact it was fitted under, so `rbcsim stretch --config` with it runs the
+// fitted curve.
 TEST(CliCalibrate, StretchFitWritesParametersThatRunTheFittedCurve) {
   const ScratchDirectory scratch;
-  const std::string setting = std::string(kCoarseCell) +
-                              "--set stretch.forces_pN=0,15.987,19.338,30.754 --threads 1 --json ";
+  const std::string setting =
+      std::string(kCoarseCell) + "--set stretch.forces_pN=0,15.987,19.338,30.754 --threads 1 ";
   const auto fit_dir = scratch.path() / "fit";
   const auto fit = run_rbcsim("calibrate --fits stretch --set stretch.contact.rigid=true " +
                                   setting + "--output '" + fit_dir.string() + "'",
                               scratch.path());
   ASSERT_EQ(fit.exit_code, 0) << fit.err;
-  const auto printed = nlohmann::json::parse(fit.out);
+  // The table prints the comparison with Mills as a group under the stretch fit.
+  EXPECT_NE(fit.out.find("\n  comparison\n    reference"), std::string::npos) << fit.out;
+  EXPECT_NE(fit.out.find("    rms_axial_um"), std::string::npos) << fit.out;
+  const auto printed = read_json(fit_dir / "result.json");
   const auto schema = read_json(fs::path(RBCSIM_SOURCE_DIR) / "schemas/result.schema.json");
   EXPECT_EQ(rbcsim::testing::schema_problems(printed, schema), std::vector<std::string>{});
   const auto& stretch_fit = printed["calibrate"]["stretch_fit"];
@@ -91,7 +95,7 @@ TEST(CliCalibrate, StretchFitWritesParametersThatRunTheFittedCurve) {
   EXPECT_EQ(parameters["stretch"]["contact"]["rigid"], true);
   const auto stretch =
       run_rbcsim("stretch --config '" + (fit_dir / "parameters.json").string() + "' " + setting +
-                     "--output '" + (scratch.path() / "stretch").string() + "'",
+                     "--json --output '" + (scratch.path() / "stretch").string() + "'",
                  scratch.path());
   ASSERT_EQ(stretch.exit_code, 0) << stretch.err;
   // The fitted curve run again by the stretch command compares with the data as the fit said.
