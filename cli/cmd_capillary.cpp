@@ -59,9 +59,9 @@ nlohmann::ordered_json headline(const cases::CapillaryRun& run) {
 void print_summary(const nlohmann::ordered_json& result, const cases::CapillaryRun& run,
                    const RunDirectory& directory) {
   const auto& section = result["capillary"];
-  std::printf("capillary %s, %s: inlet %.4g m/s over %.4g um, Re %.4g, Ca %.4g (G_s %.4g uN/m)\n",
-              section["geometry"].get<std::string>().c_str(),
-              result["morphology"].get<std::string>().c_str(),
+  std::printf("%s\n",
+              summary_heading("capillary", section["geometry"].get<std::string>(), result).c_str());
+  std::printf("inlet %.4g m/s over %.4g um, Re %.4g, Ca %.4g (G_s %.4g uN/m)\n",
               run.numbers.mean_inlet_velocity_m_per_s, run.numbers.inlet_diameter_um,
               run.numbers.reynolds_number, run.numbers.capillary_number,
               run.numbers.shear_modulus_N_per_m * 1e6);

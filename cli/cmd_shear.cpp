@@ -136,11 +136,8 @@ nlohmann::ordered_json headline(const std::vector<cases::ShearPoint>& points) {
 void print_table(const nlohmann::ordered_json& result, const std::vector<cases::ShearPoint>& points,
                  const RunDirectory& directory, bool verbose) {
   const auto& section = result["shear"];
-  std::printf("shear (%s), %s, terms:", section["boundary"].get<std::string>().c_str(),
-              result["morphology"].get<std::string>().c_str());
-  for (const auto& term : section["forces_terms"]) {
-    std::printf(" %s", term.get<std::string>().c_str());
-  }
+  std::printf("%s",
+              summary_heading("shear", section["boundary"].get<std::string>(), result).c_str());
   std::printf("\n%8s %10s %8s %8s %9s %8s %10s %6s %8s %8s %10s %9s %7s %7s", "rate_1/s",
               "sim_rate", "Re", "Ca", "length_um", "swing_um", "breadth_um", "DI", "incl_deg",
               "tt_hz", "smooth_rad", "rough_rad", "strain", "steady");

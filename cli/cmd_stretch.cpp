@@ -132,11 +132,7 @@ void print_table(const nlohmann::ordered_json& result, const cases::StretchRun& 
                  const cases::StretchComparison& comparison, const RunDirectory& directory,
                  bool verbose) {
   const auto& section = result["stretch"];
-  std::printf("stretch (%s), %s, terms:", section["mode"].get<std::string>().c_str(),
-              result["morphology"].get<std::string>().c_str());
-  for (const auto& term : section["forces_terms"]) {
-    std::printf(" %s", term.get<std::string>().c_str());
-  }
+  std::printf("%s", summary_heading("stretch", section["mode"].get<std::string>(), result).c_str());
   const bool fluid = section["mode"] == "fluid";
   std::printf("\n%10s %10s %15s %11s %10s", "force_pN", "axial_um", "transverse_um",
               fluid ? "steps" : "iterations", "converged");

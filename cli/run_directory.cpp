@@ -153,6 +153,17 @@ void wire_checkpoints_in(const std::filesystem::path& subdirectory,
   }
 }
 
+std::string summary_heading(const std::string& command, const std::string& variant,
+                            const nlohmann::ordered_json& result) {
+  std::string heading = command;
+  heading.append(" (").append(variant).append("), ");
+  heading.append(result["morphology"].get<std::string>()).append(", terms:");
+  for (const auto& term : result[command]["forces_terms"]) {
+    heading.append(" ").append(term.get<std::string>());
+  }
+  return heading;
+}
+
 Progress::Progress(const CommonOptions& options)
     : terminal_(!options.quiet && isatty(STDERR_FILENO) == 1),
       log_(!terminal_ && options.verbose) {}

@@ -79,6 +79,11 @@ void wire_checkpoints_in(const std::filesystem::path& subdirectory,
 // The SHA-256 of the resolved config: what a checkpoint and a resume must agree on.
 std::string config_fingerprint(const config::Config& config);
 
+// The heading of a command's printed summary: "<command> (<variant>), <morphology>, terms: <the
+// enabled membrane terms>", the terms from the command's result section ("forces_terms").
+std::string summary_heading(const std::string& command, const std::string& variant,
+                            const nlohmann::ordered_json& result);
+
 // Progress on stderr (DESIGN.md §1: results go to files and stdout, so pipelines never see
 // progress). On a terminal, unless --quiet: one line, overwritten. Otherwise only with --verbose,
 // for runs of hours logged to a file: whole lines, the first at once and then at most one per

@@ -98,7 +98,9 @@ TEST(CliCapillary, NotPassingInTimeExitsOneAndRecordsIt) {
   EXPECT_EQ(result.exit_code, 1);
   EXPECT_NE(result.err.find("did not pass the narrow section"), std::string::npos) << result.err;
   for (const auto* text :
-       {"capillary paper-morphology, discocyte", " Re 0.1", " Ca 0.5", "NOT PASSED"}) {
+       {"capillary (paper-morphology), discocyte, terms: link bend area volume area_difference "
+        "total_curvature\n",
+        " Re 0.1", " Ca 0.5", "NOT PASSED"}) {
     EXPECT_NE(result.out.find(text), std::string::npos) << text << " in " << result.out;
   }
   const auto written = read_json(run_dir / "result.json");
