@@ -74,23 +74,11 @@ nlohmann::json transit_order(RunList runs, Section& section) {
           {"agrees_with_paper", agrees}};
 }
 
-// The runs' tubes, each once, in the order first met.
-std::vector<std::string> distinct_geometries(const RunList& runs) {
-  std::vector<std::string> geometries;
-  for (const auto* run : runs) {
-    const auto geometry = geometry_of(*run);
-    if (std::find(geometries.begin(), geometries.end(), geometry) == geometries.end()) {
-      geometries.push_back(geometry);
-    }
-  }
-  return geometries;
-}
-
 // Per set of membrane terms and tube in which every morphology ran once and at least two ran: the
 // order (transit times through different tubes are not compared).
 nlohmann::json transit_orders(const RunList& runs, Section& section) {
   auto orders = nlohmann::json::array();
-  for (const auto& geometry : distinct_geometries(runs)) {
+  for (const auto& geometry : distinct(runs, geometry_of)) {
     for (const auto& terms : distinct(runs, &RunDirectory::terms)) {
       RunList group;
       std::vector<std::string> morphologies;
@@ -157,7 +145,7 @@ nlohmann::json peak_deformation_by_terms(const RunList& runs, Section& section) 
 
 // "morphology, terms", and the tube when the runs went through more than one.
 std::vector<std::string> capillary_labels(const RunList& runs) {
-  if (distinct_geometries(runs).size() <= 1) return distinct_labels(runs, morphology_and_terms);
+  if (distinct(runs, geometry_of).size() <= 1) return distinct_labels(runs, morphology_and_terms);
   return distinct_labels(runs, [](const RunDirectory& run) {
     return morphology_and_terms(run) + ", " + geometry_of(run);
   });

@@ -26,11 +26,13 @@ std::vector<std::string> distinct_labels(
   return labels;
 }
 
-std::vector<std::string> distinct(const RunList& runs, std::string RunDirectory::*member) {
+std::vector<std::string> distinct(const RunList& runs,
+                                  const std::function<std::string(const RunDirectory&)>& value_of) {
   std::vector<std::string> values;
   for (const auto* run : runs) {
-    if (std::find(values.begin(), values.end(), run->*member) == values.end()) {
-      values.push_back(run->*member);
+    auto value = value_of(*run);
+    if (std::find(values.begin(), values.end(), value) == values.end()) {
+      values.push_back(std::move(value));
     }
   }
   return values;

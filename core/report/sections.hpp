@@ -39,8 +39,10 @@ Section build_other_section(const std::string& command, std::size_t index, const
 std::vector<std::string> distinct_labels(
     const RunList& runs, const std::function<std::string(const RunDirectory&)>& describe);
 
-// The distinct values of a member (morphology, terms, ...) over the runs, in order of appearance.
-std::vector<std::string> distinct(const RunList& runs, std::string RunDirectory::*member);
+// The distinct values of a property (a member such as &RunDirectory::terms, or a function of the
+// run) over the runs, in order of appearance.
+std::vector<std::string> distinct(const RunList& runs,
+                                  const std::function<std::string(const RunDirectory&)>& value_of);
 
 // "discocyte, all six".
 std::string morphology_and_terms(const RunDirectory& run);
