@@ -1,7 +1,6 @@
 // rbcsim calibrate: the patch tests (DESIGN.md §4): what the membrane's k parameters mean as
 // moduli, and the k that give target moduli, written as a config file the other commands accept.
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -34,30 +33,15 @@ struct CalibrateOptions {
   std::optional<double> overall_bending_modulus_J;
 };
 
-void assign(std::vector<std::string>& assignments, const std::string& path,
-            const std::optional<double>& value) {
-  if (value) assignments.push_back(path + "=" + format_number(*value));
-}
-
-void check_fit_names(const std::string& list) {
-  const auto known = cases::calibration_fit_names();
-  std::size_t start = 0;
-  while (start <= list.size()) {
-    const auto comma = std::min(list.find(',', start), list.size());
-    const auto name = list.substr(start, comma - start);
-    if (std::find(known.begin(), known.end(), name) == known.end()) {
-      std::string names;
-      for (const auto& fit : known) names.append(names.empty() ? "" : ", ").append(fit);
-      throw InputError("--fits", "unknown fit " + in_quotes(name) + " (known: " + names + ")");
-    }
-    start = comma + 1;
-  }
+void assign_number(config::ConfigRequest& request, std::string_view option, std::string_view path,
+                   const std::optional<double>& value) {
+  if (value) assign_option(request, option, path, format_number(*value));
 }
 
 // The command's own options are --set assignments in disguise, so config.json records them.
 config::Config resolve_calibrate_config(const CalibrateOptions& options) {
   auto common = options.common;
-  auto& assignments = common.config.assignments;
+  auto& request = common.config;
   const bool shear_area = options.shear_uN_per_m || options.area_uN_per_m;
   const bool young_poisson = options.young_uN_per_m || options.poisson_ratio;
   if (shear_area && young_poisson) {
@@ -65,19 +49,21 @@ config::Config resolve_calibrate_config(const CalibrateOptions& options) {
                      "give the in-plane targets either as shear and area moduli or as Young's "
                      "modulus and Poisson ratio, not both");
   }
-  if (shear_area) assignments.push_back("calibrate.target.moduli=shear-area");
-  if (young_poisson) assignments.push_back("calibrate.target.moduli=young-poisson");
-  if (options.fits) {
-    check_fit_names(*options.fits);  // diagnose as --fits, not --set
-    assignments.push_back("calibrate.fits=" + *options.fits);
-  }
-  assign(assignments, "calibrate.target.shear_modulus_uN_per_m", options.shear_uN_per_m);
-  assign(assignments, "calibrate.target.area_modulus_uN_per_m", options.area_uN_per_m);
-  assign(assignments, "calibrate.target.young_modulus_uN_per_m", options.young_uN_per_m);
-  assign(assignments, "calibrate.target.poisson_ratio", options.poisson_ratio);
-  assign(assignments, "calibrate.target.bending_modulus_J", options.bending_modulus_J);
-  assign(assignments, "calibrate.target.overall_bending_modulus_J",
-         options.overall_bending_modulus_J);
+  if (shear_area) request.assignments.push_back("calibrate.target.moduli=shear-area");
+  if (young_poisson) request.assignments.push_back("calibrate.target.moduli=young-poisson");
+  if (options.fits) assign_option(request, "--fits", "calibrate.fits", *options.fits);
+  assign_number(request, "--target-shear-modulus", "calibrate.target.shear_modulus_uN_per_m",
+                options.shear_uN_per_m);
+  assign_number(request, "--target-area-modulus", "calibrate.target.area_modulus_uN_per_m",
+                options.area_uN_per_m);
+  assign_number(request, "--target-young-modulus", "calibrate.target.young_modulus_uN_per_m",
+                options.young_uN_per_m);
+  assign_number(request, "--target-poisson-ratio", "calibrate.target.poisson_ratio",
+                options.poisson_ratio);
+  assign_number(request, "--target-bending-modulus", "calibrate.target.bending_modulus_J",
+                options.bending_modulus_J);
+  assign_number(request, "--target-overall-bending-modulus",
+                "calibrate.target.overall_bending_modulus_J", options.overall_bending_modulus_J);
   return resolve_config(common);
 }
 

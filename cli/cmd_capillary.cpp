@@ -38,10 +38,14 @@ struct CapillaryOptions {
 // The command's own options are --set assignments in disguise, so config.json records them.
 config::Config resolve_capillary_config(const CapillaryOptions& options) {
   auto common = options.common;
-  auto& assignments = common.config.assignments;
-  if (options.mesh_file) assignments.push_back("mesh.file=" + *options.mesh_file);
-  if (options.geometry) assignments.push_back("capillary.geometry=" + *options.geometry);
-  if (options.wall_file) assignments.push_back("capillary.wall_file=" + *options.wall_file);
+  auto& request = common.config;
+  if (options.mesh_file) assign_option(request, "mesh", "mesh.file", *options.mesh_file);
+  if (options.geometry) {
+    assign_option(request, "--geometry", "capillary.geometry", *options.geometry);
+  }
+  if (options.wall_file) {
+    assign_option(request, "--wall", "capillary.wall_file", *options.wall_file);
+  }
   return resolve_config(common);
 }
 

@@ -46,14 +46,14 @@ struct ShearOptions {
 // The command's own options are --set assignments in disguise, so config.json records them.
 config::Config resolve_shear_config(const ShearOptions& options) {
   auto common = options.common;
-  auto& assignments = common.config.assignments;
+  auto& request = common.config;
   if (options.rates) {
-    setup::shear_rates_from(*options.rates, "--rates");  // diagnose as --rates, not --set
-    assignments.push_back("shear.rates_per_s=" + *options.rates);
+    setup::shear_rates_from(*options.rates, "--rates");  // the range's own diagnostics
+    assign_option(request, "--rates", "shear.rates_per_s", *options.rates);
   }
-  if (options.boundary) assignments.push_back("shear.boundary=" + *options.boundary);
+  if (options.boundary) assign_option(request, "--boundary", "shear.boundary", *options.boundary);
   if (options.max_strain) {
-    assignments.push_back("shear.max_strain=" + format_number(*options.max_strain));
+    assign_option(request, "--max-strain", "shear.max_strain", format_number(*options.max_strain));
   }
   return resolve_config(common);
 }

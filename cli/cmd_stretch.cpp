@@ -37,16 +37,16 @@ struct StretchOptions {
 // The command's own options are --set assignments in disguise, so config.json records them.
 config::Config resolve_stretch_config(const StretchOptions& options) {
   auto common = options.common;
-  auto& assignments = common.config.assignments;
-  if (options.mode) assignments.push_back("stretch.mode=" + *options.mode);
+  auto& request = common.config;
+  if (options.mode) assign_option(request, "--mode", "stretch.mode", *options.mode);
   if (options.forces) {
-    setup::stretch_forces_from(*options.forces, "--forces");  // diagnose as --forces, not --set
-    assignments.push_back("stretch.forces_pN=" + *options.forces);
+    setup::stretch_forces_from(*options.forces, "--forces");  // the range's own diagnostics
+    assign_option(request, "--forces", "stretch.forces_pN", *options.forces);
   }
   if (options.contact_diameter_um) {
-    assignments.push_back("stretch.contact.rule=contact-diameter");
-    assignments.push_back("stretch.contact.diameter_um=" +
-                          format_number(*options.contact_diameter_um));
+    assign_option(request, "--contact-diameter-um", "stretch.contact.rule", "contact-diameter");
+    assign_option(request, "--contact-diameter-um", "stretch.contact.diameter_um",
+                  format_number(*options.contact_diameter_um));
   }
   return resolve_config(common);
 }

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "common/errors.hpp"
+#include "config/config_sources.hpp"
 #include "config/option_table.hpp"
 
 namespace rbcsim::cli {
@@ -49,6 +50,13 @@ void add_common_options(CLI::App* command, CommonOptions& options) {
       ->add_flag("--verbose", options.verbose,
                  "Print more detail; progress lines on stderr also when it is not a terminal")
       ->excludes(quiet);
+}
+
+void assign_option(config::ConfigRequest& request, std::string_view option, std::string_view path,
+                   const std::string& value) {
+  auto assignment = std::string(path) + "=" + value;
+  config::parse_assignment(assignment, option);
+  request.assignments.push_back(std::move(assignment));
 }
 
 CheckpointInterval parse_checkpoint_interval(std::string_view text) {

@@ -50,6 +50,12 @@ void add_config_options(CLI::App* command, config::ConfigRequest& request);
 
 void add_common_options(CLI::App* command, CommonOptions& options);
 
+// For a command option that stands for a --set assignment (--geometry for capillary.geometry):
+// checks `value` now, so that a bad one is diagnosed under the option's own name and not as
+// --set, then appends "path=value" to the request's assignments, so config.json records it.
+void assign_option(config::ConfigRequest& request, std::string_view option, std::string_view path,
+                   const std::string& value);
+
 // config::resolve_config of the options given; throws InputError (exit 2) on bad input.
 config::Config resolve_config(const CommonOptions& options);
 

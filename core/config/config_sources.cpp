@@ -14,8 +14,6 @@ namespace {
 
 using nlohmann::json;
 
-constexpr std::string_view kAssignmentSource = "--set";
-
 // nlohmann reports the 1-based offset of the last byte it read; count lines up to it.
 std::string position_of(std::string_view text, std::size_t byte) {
   const auto before = text.substr(0, std::min(text.size(), byte > 0 ? byte - 1 : 0));
@@ -90,27 +88,26 @@ json read_config_file(const std::filesystem::path& file) {
   return parse_config_text(text.str(), file.string());
 }
 
-json parse_assignment(std::string_view assignment) {
+json parse_assignment(std::string_view assignment, std::string_view source) {
   const auto equals = assignment.find('=');
   if (equals == std::string_view::npos || equals == 0) {
-    throw InputError(std::string(kAssignmentSource),
-                     "expected key.path=value, got " + in_quotes(assignment));
+    throw InputError(std::string(source), "expected key.path=value, got " + in_quotes(assignment));
   }
   const std::string path(assignment.substr(0, equals));
   const auto segments = split_path(path);
   if (find_annotation_key(segments.front())) {
-    throw InputError(std::string(kAssignmentSource), path + ": written by rbcsim, cannot be set");
+    throw InputError(std::string(source), path + ": written by rbcsim, cannot be set");
   }
   json tree = json::object();
   json* node = &tree;
   for (const auto& segment : segments) {
     if (segment.empty()) {
-      throw InputError(std::string(kAssignmentSource), path + ": empty key in the path");
+      throw InputError(std::string(source), path + ": empty key in the path");
     }
     node = &(*node)[segment];
   }
   *node = assignment_value(option_table().find(path), assignment.substr(equals + 1));
-  validate_tree(tree, kAssignmentSource);
+  validate_tree(tree, source);
   return tree;
 }
 

@@ -18,9 +18,10 @@ nlohmann::json parse_config_text(std::string_view text, std::string_view source)
 // Reads and parses a --config file; the file name is the source of every diagnostic.
 nlohmann::json read_config_file(const std::filesystem::path& file);
 
-// "key.path=value" as a partial config tree (source "--set"). The value is read as JSON when it
-// parses, else taken as a string; a string option always takes the text as written
-// (--set mesh.file=42 is the file "42"), and a list of choices also reads "link,bend".
-nlohmann::json parse_assignment(std::string_view assignment);
+// "key.path=value" as a partial config tree. The value is read as JSON when it parses, else taken
+// as a string; a string option always takes the text as written (--set mesh.file=42 is the file
+// "42"), and a list of choices also reads "link,bend". `source` names the assignment in every
+// diagnostic: "--set", or the command option that stands for it ("--geometry").
+nlohmann::json parse_assignment(std::string_view assignment, std::string_view source = "--set");
 
 }  // namespace rbcsim::config

@@ -279,6 +279,32 @@ TEST_F(BadInput, OutOfRangeValue) {
                         "mesh.subdivisions");
 }
 
+// A command's own option stands for a config key (--geometry for capillary.geometry); a bad value
+// is diagnosed under the option the user typed, not as a --set the user never wrote.
+TEST_F(BadInput, ACommandOptionsBadValueIsNamedAsThatOption) {
+  const struct {
+    std::string arguments;
+    std::string option;
+    std::string problem;
+  } cases[] = {
+      {"capillary --geometry foo", "--geometry: capillary.geometry",
+       "\"foo\" is not one of paper-validation, paper-morphology"},
+      {"stretch --mode slow", "--mode: stretch.mode", "\"slow\" is not one of"},
+      {"stretch --contact-diameter-um -1", "--contact-diameter-um: stretch.contact.diameter_um",
+       "must be > 0"},
+      {"shear --boundary box", "--boundary: shear.boundary", "\"box\" is not one of"},
+      {"shear --max-strain -3", "--max-strain: shear.max_strain", "must be > 0"},
+      {"calibrate --fits stretch,bend2", "--fits: calibrate.fits", "\"bend2\" is not one of"},
+      {"calibrate --target-poisson-ratio 3", "--target-poisson-ratio: calibrate.target",
+       "must be < 1"},
+  };
+  for (const auto& bad : cases) {
+    expect_run_refused(bad.arguments, bad.option, bad.problem);
+    EXPECT_EQ(run_rbcsim(bad.arguments, scratch_.path()).err.find("--set"), std::string::npos)
+        << bad.arguments;
+  }
+}
+
 // "Cell larger than the domain": the cell plus the IBM kernel's reach (phi2: 1 lattice spacing,
 // phi4: 2) on each side must fit the periodic box or the lumen. The 7.82 um discocyte.
 TEST_F(BadInput, ShearBoxTooSmallForTheCellAndTheKernel) {
