@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,15 @@ struct SweepCase {
   std::string morphology;
   bool new_forces;  // with area_difference and total_curvature
 };
+
+// The case as the test's name and ctest's listing show it: "stomatocyte_II_six".
+std::string sweep_name(const SweepCase& sweep) {
+  std::string name = sweep.morphology + (sweep.new_forces ? "_six" : "_four");
+  for (char& c : name) c = (c == '-') ? '_' : c;
+  return name;
+}
+
+void PrintTo(const SweepCase& sweep, std::ostream* out) { *out << sweep_name(sweep); }
 
 class ValidateShear : public ::testing::TestWithParam<SweepCase> {};
 
@@ -108,10 +118,6 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(SweepCase{"discocyte", true}, SweepCase{"discocyte", false},
                       SweepCase{"stomatocyte-II", true}, SweepCase{"stomatocyte-II", false},
                       SweepCase{"echinocyte-III", true}, SweepCase{"echinocyte-III", false}),
-    [](const ::testing::TestParamInfo<SweepCase>& sweep) {
-      std::string name = sweep.param.morphology + (sweep.param.new_forces ? "_six" : "_four");
-      for (char& c : name) c = (c == '-') ? '_' : c;
-      return name;
-    });
+    [](const ::testing::TestParamInfo<SweepCase>& sweep) { return sweep_name(sweep.param); });
 
 }  // namespace

@@ -9,6 +9,8 @@
 
 #include <chrono>
 #include <cstdio>
+#include <ostream>
+#include <string>
 
 #include "cases/stretch_reference.hpp"
 #include "io/csv_table.hpp"
@@ -23,6 +25,14 @@ struct StretchVariant {
   std::vector<std::string> terms;
   bool rigid_contact = false;
 };
+
+// The variant as the test's name and ctest's listing show it: "6_terms", "6_terms_rigid_contacts".
+std::string variant_name(const StretchVariant& variant) {
+  return std::to_string(variant.terms.size()) + "_terms" +
+         (variant.rigid_contact ? "_rigid_contacts" : "");
+}
+
+void PrintTo(const StretchVariant& variant, std::ostream* out) { *out << variant_name(variant); }
 
 class ValidateStretch : public ::testing::TestWithParam<StretchVariant> {};
 
@@ -64,6 +74,9 @@ const std::vector<std::string> kFourTerms{"link", "bend", "area", "volume"};
 
 INSTANTIATE_TEST_SUITE_P(ValidateTerms, ValidateStretch,
                          ::testing::Values(StretchVariant{kSixTerms}, StretchVariant{kFourTerms},
-                                           StretchVariant{kSixTerms, true}));
+                                           StretchVariant{kSixTerms, true}),
+                         [](const ::testing::TestParamInfo<StretchVariant>& variant) {
+                           return variant_name(variant.param);
+                         });
 
 }  // namespace
