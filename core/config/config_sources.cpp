@@ -1,13 +1,12 @@
 #include "config/config_sources.hpp"
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "config/option_table.hpp"
 #include "config/validation.hpp"
+#include "io/text_file.hpp"
 
 namespace rbcsim::config {
 namespace {
@@ -77,15 +76,7 @@ json parse_config_text(std::string_view text, std::string_view source) {
 }
 
 json read_config_file(const std::filesystem::path& file) {
-  if (!std::filesystem::exists(file)) throw InputError(file.string(), "no such file");
-  if (std::filesystem::is_directory(file)) {
-    throw InputError(file.string(), "is a directory, expected a JSON file");
-  }
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream) throw InputError(file.string(), "cannot open the file for reading");
-  std::ostringstream text;
-  text << stream.rdbuf();
-  return parse_config_text(text.str(), file.string());
+  return parse_config_text(io::read_text_file(file), file.string());
 }
 
 json parse_assignment(std::string_view assignment, std::string_view source) {

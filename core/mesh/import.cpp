@@ -137,7 +137,7 @@ TriangleBound check_size(const std::filesystem::path& path, std::uintmax_t file_
 
 TriangleMesh read_with_assimp(const std::filesystem::path& path, std::size_t max_triangles) {
   const std::string name = path.string();
-  if (!std::filesystem::is_regular_file(path)) throw InputError(name, "no such file");
+  io::require_regular_file(path);
   const auto file_bytes = std::filesystem::file_size(path);
   if (file_bytes == 0) throw InputError(name, "empty file");
   const auto bound = check_size(path, file_bytes, max_triangles);

@@ -216,6 +216,15 @@ TEST_F(BadInput, TwoSeparateBodies) {
 
 TEST_F(BadInput, EmptyFile) { expect_mesh_refused(write("empty.stl", ""), "empty file"); }
 
+TEST_F(BadInput, MeshOrConfigPathThatIsNotAFile) {
+  const auto directory = scratch_.path() / "cell.stl";
+  fs::create_directory(directory);
+  expect_mesh_refused(directory, "is a directory");
+  // A device exists but is no file: /dev/null must not read as an empty mesh or config.
+  expect_refused("mesh info /dev/null", "/dev/null", "is not a regular file");
+  expect_refused("config show --config /dev/null", "/dev/null", "is not a regular file");
+}
+
 TEST_F(BadInput, FileThatIsNotAMesh) {
   expect_mesh_refused(write("notes.stl", "These are my notes, not a mesh.\n"), "binary STL");
   std::string noise(1000, '\0');
