@@ -5,6 +5,7 @@
 #include "lattice/optimised_kernel.hpp"
 #include "lattice/reference_kernel.hpp"
 
+#include <algorithm>
 #include <string>
 
 namespace rbcsim::lattice {
@@ -39,10 +40,28 @@ void check_lees_edwards_planes(const LatticeSetup& setup) {
   }
 }
 
+// Populations laid out `stride` values apart, as kDirections * node_count packed values.
+std::vector<double> without_padding(std::span<const double> populations, std::size_t stride,
+                                    std::size_t node_count) {
+  std::vector<double> packed(kDirections * node_count);
+  for (int i = 0; i < kDirections; ++i) {
+    const auto array = populations.begin() + i * stride;
+    std::copy(array, array + node_count, packed.begin() + i * node_count);
+  }
+  return packed;
+}
+
 }  // namespace
 
+std::size_t population_stride(std::size_t node_count) {
+  constexpr std::size_t kValuesPerLine = 64 / sizeof(double);
+  const std::size_t lines = (node_count + kValuesPerLine - 1) / kValuesPerLine;
+  return (lines % 2 == 1 ? lines : lines + 1) * kValuesPerLine;
+}
+
 FluidArrays::FluidArrays(std::size_t node_count)
-    : populations(kDirections * node_count, 0.0),
+    : population_stride(lattice::population_stride(node_count)),
+      populations(kDirections * population_stride, 0.0),
       density(node_count, 0.0),
       velocity{std::vector<double>(node_count, 0.0), std::vector<double>(node_count, 0.0),
                std::vector<double>(node_count, 0.0)},
@@ -75,21 +94,34 @@ WallLinkWeights wall_link_weights(const LatticeSetup& setup, std::size_t node, i
                                   behind_is_fluid);
 }
 
+std::vector<double> packed_populations(const FluidArrays& arrays) {
+  return without_padding(arrays.populations, arrays.population_stride, arrays.density.size());
+}
+
+void unpack_populations(std::span<const double> packed, FluidArrays& arrays) {
+  const std::size_t node_count = arrays.density.size();
+  for (int i = 0; i < kDirections; ++i) {
+    const auto array = packed.begin() + i * node_count;
+    std::copy(array, array + node_count, arrays.populations.begin() + i * arrays.population_stride);
+  }
+}
+
 std::vector<double> pre_collision_populations(const LatticeSetup& setup, const FluidArrays& arrays,
                                               std::size_t time) {
   if (arrays.layout == PopulationLayout::natural) {
-    return arrays.populations;
+    return packed_populations(arrays);
   }
   const std::size_t node_count = setup.grid.node_count();
+  const std::size_t stride = arrays.population_stride;
   std::vector<double> post(arrays.populations.size());
   for (int i = 0; i < kDirections; ++i) {
     for (std::size_t node = 0; node < node_count; ++node) {
-      post[i * node_count + node] = arrays.populations[kOpposite[i] * node_count + node];
+      post[i * stride + node] = arrays.populations[kOpposite[i] * stride + node];
     }
   }
   std::vector<double> pre = post;
   stream_reference(setup, arrays, post, pre, time);
-  return pre;
+  return without_padding(pre, stride, node_count);
 }
 
 }  // namespace rbcsim::lattice

@@ -28,10 +28,19 @@ enum class PopulationLayout {
             // state between its local and its streaming step
 };
 
+// Values from the start of one population array to the next: the node count rounded up to an
+// odd number of 64-byte cache lines. The kernels stream all 19 arrays side by side; at a stride
+// that is a multiple of a large power of two (128^3 nodes: exactly 16 MiB) they all fall on the
+// same cache sets and evict each other (measured: 128^3 ran at 30-32 MLUPS on one core, 130^3 at
+// 70-72; README "rbcsim bench"). With an odd number of lines the 19 arrays take distinct sets.
+std::size_t population_stride(std::size_t node_count);
+
 struct FluidArrays {
   explicit FluidArrays(std::size_t node_count);
 
-  // Structure of arrays: population i of node n at populations[i * node_count + n].
+  // Structure of arrays: population i of node n at populations[i * population_stride + n]. The
+  // padding after each array's node_count values is never read.
+  std::size_t population_stride;
   std::vector<double> populations;
   PopulationLayout layout = PopulationLayout::natural;
   // Density and velocity u = (sum_i f_i c_i + F/2) / rho of the latest collision at each fluid
@@ -87,8 +96,13 @@ const FluidKernelEntry& find_fluid_kernel(std::string_view name);
 // to `setup`, which must outlive it.
 std::unique_ptr<FluidKernel> make_fluid_kernel(std::string_view name, const LatticeSetup& setup);
 
-// The pre-collision populations in natural layout, whichever layout `arrays` holds. `time` is the
-// number of steps completed (it sets the Lees-Edwards offset of a pending stream).
+// The populations without the padding: kDirections * node_count values, population i of node n at
+// [i * node_count + n] (the layout of checkpoints and of the solver's interface), and back.
+std::vector<double> packed_populations(const FluidArrays& arrays);
+void unpack_populations(std::span<const double> packed, FluidArrays& arrays);
+
+// The pre-collision populations in natural layout, packed, whichever layout `arrays` holds.
+// `time` is the number of steps completed (it sets the Lees-Edwards offset of a pending stream).
 std::vector<double> pre_collision_populations(const LatticeSetup& setup, const FluidArrays& arrays,
                                               std::size_t time);
 

@@ -106,7 +106,7 @@ void FluidSolver::initialise_equilibrium(const std::vector<double>& density,
     }
     const std::array<double, 3> u = {velocity[0][node], velocity[1][node], velocity[2][node]};
     for (int i = 0; i < kDirections; ++i) {
-      arrays_.populations[i * node_count + node] = equilibrium(i, density[node], u);
+      arrays_.populations[i * arrays_.population_stride + node] = equilibrium(i, density[node], u);
     }
     arrays_.density[node] = density[node];
     for (int axis = 0; axis < 3; ++axis) {
@@ -121,7 +121,7 @@ void FluidSolver::initialise_populations(const std::vector<double>& populations)
   if (populations.size() != kDirections * node_count) {
     throw std::invalid_argument("lattice: initial populations must have 19 values per node");
   }
-  arrays_.populations = populations;
+  unpack_populations(populations, arrays_);
   arrays_.layout = PopulationLayout::natural;
   for (std::size_t node = 0; node < node_count; ++node) {
     if (!setup_.boundaries.is_fluid(node)) {
@@ -261,7 +261,6 @@ std::array<double, 3> FluidSolver::velocity_at(std::size_t node) const {
 
 double FluidSolver::total_mass() const {
   const LatticeGrid& g = grid();
-  const std::size_t node_count = g.node_count();
   const auto rows = static_cast<std::int64_t>(g.row_count());
   std::vector<double> row_mass(g.row_count(), 0.0);
 #pragma omp parallel for schedule(static) if (grid().worth_threads())
@@ -273,7 +272,7 @@ double FluidSolver::total_mass() const {
         continue;
       }
       for (int i = 0; i < kDirections; ++i) {
-        mass += arrays_.populations[i * node_count + node];
+        mass += arrays_.populations[i * arrays_.population_stride + node];
       }
     }
     row_mass[row] = mass;
@@ -302,11 +301,12 @@ PopulationLayout population_layout_from(StateArchive& archive) {
 
 }  // namespace
 
-// The population array is saved as the kernel holds it, with its layout, and restored as is:
-// streaming a swapped (post-collision, AA) array here would round differently from the kernel's
-// own next step at Lees-Edwards and wall links, and the resumed run would agree only to rounding.
+// The population array is saved as the kernel holds it (less the padding between the arrays), with
+// its layout, and restored as is: streaming a swapped (post-collision, AA) array here would round
+// differently from the kernel's own next step at Lees-Edwards and wall links, and the resumed run
+// would agree only to rounding.
 void FluidSolver::save_state(StateArchive& archive) const {
-  archive.put("fluid.populations", arrays_.populations);
+  archive.put("fluid.populations", packed_populations(arrays_));
   archive.put("fluid.layout", {arrays_.layout == PopulationLayout::swapped ? 1.0 : 0.0});
   archive.put("fluid.density", arrays_.density);
   for (int axis = 0; axis < 3; ++axis) {
@@ -317,7 +317,7 @@ void FluidSolver::save_state(StateArchive& archive) const {
 
 void FluidSolver::restore_state(StateArchive& archive) {
   const std::size_t node_count = grid().node_count();
-  arrays_.populations = archive.take("fluid.populations", kDirections * node_count);
+  unpack_populations(archive.take("fluid.populations", kDirections * node_count), arrays_);
   arrays_.layout = population_layout_from(archive);
   arrays_.density = archive.take("fluid.density", node_count);
   for (int axis = 0; axis < 3; ++axis) {

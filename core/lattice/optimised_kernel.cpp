@@ -190,7 +190,7 @@ struct LinkBuffers {
 // The streaming step of one node with boundary links: gather through each link, collide, scatter
 // through each link (the write of f*_i goes through link opp(i), whose source is x + c_i).
 template <bool kForceField>
-void collide_linked_node(const LinkedNode& linked, std::size_t node_count, FluidArrays& arrays,
+void collide_linked_node(const LinkedNode& linked, std::size_t stride, FluidArrays& arrays,
                          const LinkBuffers& buffers, const std::array<double, 3>& body_force,
                          const TrtConstants& k) {
   double* const populations = arrays.populations.data();
@@ -202,14 +202,13 @@ void collide_linked_node(const LinkedNode& linked, std::size_t node_count, Fluid
   for (int i = 0; i < kDirections; ++i) {
     switch (static_cast<LinkKind>(linked.kind[i])) {
       case LinkKind::fluid:
-        f[i] = populations[kOpposite[i] * node_count + linked.source[i]];
+        f[i] = populations[kOpposite[i] * stride + linked.source[i]];
         break;
       case LinkKind::wall:
-        f[i] = bounce_back(populations[i * node_count + node], old_density, linked.value[i]);
+        f[i] = bounce_back(populations[i * stride + node], old_density, linked.value[i]);
         break;
       case LinkKind::pressure_outlet:
-        f[i] =
-            anti_bounce_back(i, populations[i * node_count + node], linked.value[i], old_velocity);
+        f[i] = anti_bounce_back(i, populations[i * stride + node], linked.value[i], old_velocity);
         break;
       case LinkKind::lees_edwards:
         f[i] = buffers.ghost_in[linked.source[i]];
@@ -219,7 +218,7 @@ void collide_linked_node(const LinkedNode& linked, std::size_t node_count, Fluid
         const InterpolatedLink& link = buffers.interpolated_links[linked.source[i]];
         f[i] = buffers.wall_local_parts[linked.source[i]];
         if (link.weights.behind != 0.0) {
-          f[i] += link.weights.behind * populations[i * node_count + link.behind];
+          f[i] += link.weights.behind * populations[i * stride + link.behind];
         }
         break;
       }
@@ -241,13 +240,13 @@ void collide_linked_node(const LinkedNode& linked, std::size_t node_count, Fluid
     const int o = kOpposite[i];
     switch (static_cast<LinkKind>(linked.kind[o])) {
       case LinkKind::fluid:
-        populations[i * node_count + linked.source[o]] = f[i];
+        populations[i * stride + linked.source[o]] = f[i];
         break;
       case LinkKind::wall:
-        populations[o * node_count + node] = bounce_back(f[i], moments.density, linked.value[o]);
+        populations[o * stride + node] = bounce_back(f[i], moments.density, linked.value[o]);
         break;
       case LinkKind::pressure_outlet:
-        populations[o * node_count + node] = anti_bounce_back(o, f[i], linked.value[o], velocity);
+        populations[o * stride + node] = anti_bounce_back(o, f[i], linked.value[o], velocity);
         break;
       case LinkKind::lees_edwards:
         buffers.ghost_out[linked.source[o]] = f[i];
@@ -255,7 +254,7 @@ void collide_linked_node(const LinkedNode& linked, std::size_t node_count, Fluid
       case LinkKind::interpolated_wall: {
         // The part behind follows in add_wall_parts_behind.
         const InterpolatedLink& link = buffers.interpolated_links[linked.source[o]];
-        populations[o * node_count + node] =
+        populations[o * stride + node] =
             wall_link_local_part(link.weights, f[i], f[o], moments.density, link.wall_coefficient);
         break;
       }
@@ -420,7 +419,7 @@ void OptimisedKernel::step(FluidArrays& arrays, const StepParameters& parameters
 template <bool kForceField>
 void OptimisedKernel::local_step(FluidArrays& arrays, const StepParameters& parameters) const {
   const LatticeGrid& grid = setup_.grid;
-  const std::size_t node_count = grid.node_count();
+  const std::size_t stride = arrays.population_stride;
   const TrtConstants constants(parameters.rates);
   double* const populations = arrays.populations.data();
   const auto rows = static_cast<std::int64_t>(grid.row_count());
@@ -432,7 +431,7 @@ void OptimisedKernel::local_step(FluidArrays& arrays, const StepParameters& para
       const std::size_t first = row_start + run.x_begin;
       double* p[kDirections];
       for (int i = 0; i < kDirections; ++i) {
-        p[i] = populations + i * node_count + first;
+        p[i] = populations + i * stride + first;
       }
       collide_run<kForceField>(p, first, run.x_end - run.x_begin, arrays, parameters.body_force,
                                constants);
@@ -444,7 +443,7 @@ void OptimisedKernel::local_step(FluidArrays& arrays, const StepParameters& para
 template <bool kForceField>
 void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& parameters) {
   const LatticeGrid& grid = setup_.grid;
-  const std::size_t node_count = grid.node_count();
+  const std::size_t stride = arrays.population_stride;
   const TrtConstants constants(parameters.rates);
   double* const populations = arrays.populations.data();
   if (setup_.lees_edwards_velocity) {
@@ -464,7 +463,7 @@ void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& 
       double* p[kDirections];
       for (int i = 0; i < kDirections; ++i) {
         const auto& c = kVelocities[i];
-        p[i] = populations + kOpposite[i] * node_count +
+        p[i] = populations + kOpposite[i] * stride +
                grid.index(LatticeGrid::wrap(run.x_begin - c[0], grid.nx()),
                           LatticeGrid::wrap(y - c[1], grid.ny()),
                           LatticeGrid::wrap(z - c[2], grid.nz()));
@@ -473,7 +472,7 @@ void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& 
                                parameters.body_force, constants);
     }
     for (std::size_t l = linked_begin_[row]; l < linked_begin_[row + 1]; ++l) {
-      collide_linked_node<kForceField>(linked_nodes_[l], node_count, arrays, buffers,
+      collide_linked_node<kForceField>(linked_nodes_[l], stride, arrays, buffers,
                                        parameters.body_force, constants);
     }
   }
@@ -490,17 +489,16 @@ void OptimisedKernel::store_wall_local_parts(const FluidArrays& arrays) {
   if (interpolated_links_.empty()) {
     return;  // no fork-join for nothing
   }
-  const std::size_t node_count = setup_.grid.node_count();
+  const std::size_t stride = arrays.population_stride;
   const double* const populations = arrays.populations.data();
   const auto count = static_cast<std::int64_t>(interpolated_links_.size());
 #pragma omp parallel for schedule(static) if (setup_.grid.worth_threads())
   for (std::int64_t l = 0; l < count; ++l) {
     const InterpolatedLink& link = interpolated_links_[l];
     const int i = link.direction;
-    wall_local_parts_[l] =
-        wall_link_local_part(link.weights, populations[i * node_count + link.node],
-                             populations[kOpposite[i] * node_count + link.node],
-                             arrays.density[link.node], link.wall_coefficient);
+    wall_local_parts_[l] = wall_link_local_part(link.weights, populations[i * stride + link.node],
+                                                populations[kOpposite[i] * stride + link.node],
+                                                arrays.density[link.node], link.wall_coefficient);
   }
 }
 
@@ -510,7 +508,7 @@ void OptimisedKernel::add_wall_parts_behind(FluidArrays& arrays) const {
   if (interpolated_links_.empty()) {
     return;  // no fork-join for nothing
   }
-  const std::size_t node_count = setup_.grid.node_count();
+  const std::size_t stride = arrays.population_stride;
   double* const populations = arrays.populations.data();
   const auto count = static_cast<std::int64_t>(interpolated_links_.size());
 #pragma omp parallel for schedule(static) if (setup_.grid.worth_threads())
@@ -518,22 +516,20 @@ void OptimisedKernel::add_wall_parts_behind(FluidArrays& arrays) const {
     const InterpolatedLink& link = interpolated_links_[l];
     const int i = link.direction;
     if (link.weights.behind != 0.0) {
-      populations[i * node_count + link.node] +=
-          link.weights.behind * populations[kOpposite[i] * node_count + link.node];
+      populations[i * stride + link.node] +=
+          link.weights.behind * populations[kOpposite[i] * stride + link.node];
     }
   }
 }
 
 void OptimisedKernel::fill_lees_edwards_ghosts(const FluidArrays& arrays,
                                                std::size_t arrival_time) {
-  const std::size_t node_count = setup_.grid.node_count();
+  const std::size_t stride = arrays.population_stride;
   const auto nx = static_cast<std::size_t>(setup_.grid.nx());
   for_each_lees_edwards_population(
       setup_, arrays, arrival_time,
       // After the local step, f*_i of a node sits in its slot opp(i).
-      [&](int i, std::size_t source) {
-        return arrays.populations[kOpposite[i] * node_count + source];
-      },
+      [&](int i, std::size_t source) { return arrays.populations[kOpposite[i] * stride + source]; },
       [&](int i, std::size_t, int x, int z, double value) {
         ghost_in_[i * plane_size_ + x + nx * z] = value;
       });
@@ -541,7 +537,7 @@ void OptimisedKernel::fill_lees_edwards_ghosts(const FluidArrays& arrays,
 
 void OptimisedKernel::empty_lees_edwards_ghosts(FluidArrays& arrays,
                                                 std::size_t arrival_time) const {
-  const std::size_t node_count = setup_.grid.node_count();
+  const std::size_t stride = arrays.population_stride;
   const auto nx = static_cast<std::size_t>(setup_.grid.nx());
   const std::size_t layer = nx * setup_.grid.ny();
   for_each_lees_edwards_population(
@@ -550,7 +546,7 @@ void OptimisedKernel::empty_lees_edwards_ghosts(FluidArrays& arrays,
         return ghost_out_[kOpposite[i] * plane_size_ + source % nx + nx * (source / layer)];
       },
       [&](int i, std::size_t target, int, int, double value) {
-        arrays.populations[i * node_count + target] = value;
+        arrays.populations[i * stride + target] = value;
       });
 }
 

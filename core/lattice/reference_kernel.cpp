@@ -75,8 +75,8 @@ void collide_node_reference(std::array<double, kDirections>& f, const std::array
 
 void collide_reference(const LatticeSetup& setup, FluidArrays& arrays,
                        const StepParameters& parameters) {
-  const std::size_t node_count = setup.grid.node_count();
-  const auto signed_count = static_cast<std::int64_t>(node_count);
+  const std::size_t stride = arrays.population_stride;
+  const auto signed_count = static_cast<std::int64_t>(setup.grid.node_count());
 #pragma omp parallel for schedule(static) if (setup.grid.worth_threads())
   for (std::int64_t signed_node = 0; signed_node < signed_count; ++signed_node) {
     const auto node = static_cast<std::size_t>(signed_node);
@@ -85,14 +85,14 @@ void collide_reference(const LatticeSetup& setup, FluidArrays& arrays,
     }
     std::array<double, kDirections> f{};
     for (int i = 0; i < kDirections; ++i) {
-      f[i] = arrays.populations[i * node_count + node];
+      f[i] = arrays.populations[i * stride + node];
     }
     double density = 0.0;
     std::array<double, 3> velocity{};
     collide_node_reference(f, node_force(arrays, parameters, node), parameters.rates, density,
                            velocity);
     for (int i = 0; i < kDirections; ++i) {
-      arrays.populations[i * node_count + node] = f[i];
+      arrays.populations[i * stride + node] = f[i];
     }
     arrays.density[node] = density;
     for (int axis = 0; axis < 3; ++axis) {
@@ -105,14 +105,14 @@ void stream_reference(const LatticeSetup& setup, const FluidArrays& arrays,
                       const std::vector<double>& post, std::vector<double>& pre,
                       std::size_t arrival_time) {
   const LatticeGrid& grid = setup.grid;
-  const std::size_t node_count = grid.node_count();
+  const std::size_t stride = arrays.population_stride;
   const bool sliding = setup.lees_edwards_velocity.has_value();
   const double velocity_difference = setup.lees_edwards_velocity.value_or(0.0);
   const auto planes = lees_edwards_planes(
       grid.ny(), lees_edwards_offset(velocity_difference, arrival_time, grid.nx()),
       velocity_difference);
 
-  const auto signed_count = static_cast<std::int64_t>(node_count);
+  const auto signed_count = static_cast<std::int64_t>(grid.node_count());
 #pragma omp parallel for schedule(static) if (grid.worth_threads())
   for (std::int64_t signed_node = 0; signed_node < signed_count; ++signed_node) {
     const auto node = static_cast<std::size_t>(signed_node);
@@ -123,29 +123,29 @@ void stream_reference(const LatticeSetup& setup, const FluidArrays& arrays,
     for (int i = 0; i < kDirections; ++i) {
       const auto& c = kVelocities[i];
       const int o = kOpposite[i];
-      double& streamed = pre[i * node_count + node];
+      double& streamed = pre[i * stride + node];
       const int source_y = y - c[1];
       if (sliding && (source_y < 0 || source_y >= grid.ny())) {
         const auto& plane = planes[source_y < 0 ? 0 : 1];
         streamed = lees_edwards_population(grid, plane, i, x, z, arrays, [&](std::size_t source) {
-          return post[i * node_count + source];
+          return post[i * stride + source];
         });
         continue;
       }
       const std::size_t source = grid.periodic_neighbour(node, {-c[0], -c[1], -c[2]});
-      const double reflected = post[o * node_count + node];
+      const double reflected = post[o * stride + node];
       switch (setup.boundaries.kind(source)) {
         case NodeKind::fluid:
-          streamed = post[i * node_count + source];
+          streamed = post[i * stride + source];
           break;
         case NodeKind::wall: {
           const WallLinkWeights weights = wall_link_weights(setup, node, i);
           streamed = wall_link_local_part(
-              weights, reflected, post[i * node_count + node], arrays.density[node],
+              weights, reflected, post[i * stride + node], arrays.density[node],
               wall_momentum_coefficient(i, setup.boundaries.wall_velocity(source)));
           if (weights.behind != 0.0) {
             const std::size_t behind = grid.periodic_neighbour(node, c);
-            streamed += weights.behind * post[o * node_count + behind];
+            streamed += weights.behind * post[o * stride + behind];
           }
           break;
         }
@@ -159,7 +159,7 @@ void stream_reference(const LatticeSetup& setup, const FluidArrays& arrays,
 }
 
 ReferenceKernel::ReferenceKernel(const LatticeSetup& setup)
-    : setup_(setup), streamed_(kDirections * setup.grid.node_count(), 0.0) {}
+    : setup_(setup), streamed_(kDirections * population_stride(setup.grid.node_count()), 0.0) {}
 
 void ReferenceKernel::step(FluidArrays& arrays, const StepParameters& parameters) {
   if (arrays.layout != PopulationLayout::natural) {

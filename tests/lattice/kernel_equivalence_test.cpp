@@ -161,6 +161,31 @@ const std::vector<Scenario> kScenarios = {{true, false, true, "trt"},
 
 // Seven steps: the AA kernel is compared after local and after streaming steps, whose
 // populations are recovered from the swapped layout.
+// The padding between population arrays (fluid_kernel.hpp): every array holds its nodes, starts
+// on a cache line, and the stride is an odd number of lines, so that 19 arrays never share their
+// cache sets, also when the node count is a power of two (128^3).
+TEST(PopulationStride, IsAnOddNumberOfCacheLinesHoldingEveryNode) {
+  for (const std::size_t node_count :
+       {std::size_t{1}, std::size_t{8}, std::size_t{16}, std::size_t{40 * 40 * 20},
+        std::size_t{128 * 128 * 128}, std::size_t{127 * 129 * 131}}) {
+    const std::size_t stride = population_stride(node_count);
+    EXPECT_GE(stride, node_count) << node_count;
+    EXPECT_LT(stride, node_count + 16) << node_count;  // at most two lines of padding
+    EXPECT_EQ(stride % 8, 0u) << node_count;
+    EXPECT_EQ((stride / 8) % 2, 1u) << node_count;
+  }
+}
+
+// With padding, the kernels and the solver's packed interface still address every node: a state
+// written packed reads back packed unchanged.
+TEST(PopulationStride, PackedPopulationsRoundTrip) {
+  FluidArrays arrays(kGrid.node_count());
+  ASSERT_GT(arrays.population_stride, kGrid.node_count());  // the test needs real padding
+  const auto packed = random_populations(kGrid.node_count());
+  unpack_populations(packed, arrays);
+  EXPECT_EQ(packed_populations(arrays), packed);
+}
+
 TEST(KernelEquivalence, OptimisedMatchesReferenceWithEveryBoundary) {
   for (const auto& scenario : kScenarios) {
     FluidSolver geometry(kGrid, {});
