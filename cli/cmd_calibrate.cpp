@@ -49,8 +49,16 @@ config::Config resolve_calibrate_config(const CalibrateOptions& options) {
                      "give the in-plane targets either as shear and area moduli or as Young's "
                      "modulus and Poisson ratio, not both");
   }
-  if (shear_area) request.assignments.push_back("calibrate.target.moduli=shear-area");
-  if (young_poisson) request.assignments.push_back("calibrate.target.moduli=young-poisson");
+  if (shear_area) {
+    assign_option(request,
+                  options.shear_uN_per_m ? "--target-shear-modulus" : "--target-area-modulus",
+                  "calibrate.target.moduli", "shear-area");
+  }
+  if (young_poisson) {
+    assign_option(request,
+                  options.young_uN_per_m ? "--target-young-modulus" : "--target-poisson-ratio",
+                  "calibrate.target.moduli", "young-poisson");
+  }
   if (options.fits) assign_option(request, "--fits", "calibrate.fits", *options.fits);
   assign_number(request, "--target-shear-modulus", "calibrate.target.shear_modulus_uN_per_m",
                 options.shear_uN_per_m);

@@ -4,7 +4,6 @@
 #include <utility>
 
 #include "common/errors.hpp"
-#include "config/config_sources.hpp"
 #include "config/option_table.hpp"
 
 namespace rbcsim::cli {
@@ -54,9 +53,7 @@ void add_common_options(CLI::App* command, CommonOptions& options) {
 
 void assign_option(config::ConfigRequest& request, std::string_view option, std::string_view path,
                    const std::string& value) {
-  auto assignment = std::string(path) + "=" + value;
-  config::parse_assignment(assignment, option);
-  request.assignments.push_back(std::move(assignment));
+  request.option_assignments.push_back({std::string(option), std::string(path) + "=" + value});
 }
 
 CheckpointInterval parse_checkpoint_interval(std::string_view text) {

@@ -50,9 +50,9 @@ void add_config_options(CLI::App* command, config::ConfigRequest& request);
 
 void add_common_options(CLI::App* command, CommonOptions& options);
 
-// For a command option that stands for a --set assignment (--geometry for capillary.geometry):
-// checks `value` now, so that a bad one is diagnosed under the option's own name and not as
-// --set, then appends "path=value" to the request's assignments, so config.json records it.
+// For a command option that stands for a config key (--geometry for capillary.geometry): adds
+// "path=value" to the request after the --set assignments, so config.json records it and a bad
+// value is diagnosed under the option's own name, not as --set.
 void assign_option(config::ConfigRequest& request, std::string_view option, std::string_view path,
                    const std::string& value);
 

@@ -43,6 +43,9 @@ std::vector<ConfigLayer> user_layers(const ConfigRequest& request) {
   for (const auto& assignment : request.assignments) {
     layers.push_back({"--set", parse_assignment(assignment)});
   }
+  for (const auto& [option, assignment] : request.option_assignments) {
+    layers.push_back({option, parse_assignment(assignment, option)});
+  }
   return layers;
 }
 

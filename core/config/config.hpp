@@ -20,11 +20,18 @@
 
 namespace rbcsim::config {
 
+// A command's own option that stands for a config key (--geometry for capillary.geometry).
+struct OptionAssignment {
+  std::string option;      // as typed ("--geometry"): it names the value in every diagnostic
+  std::string assignment;  // "capillary.geometry=paper-validation"
+};
+
 struct ConfigRequest {
   // Default member initialisers let callers name only what they set: {.morphology = "..."}.
-  std::optional<std::string> morphology = {};     // --morphology: wins over files and --set
-  std::vector<std::filesystem::path> files = {};  // --config, applied in order
-  std::vector<std::string> assignments = {};      // --set key.path=value, after the files
+  std::optional<std::string> morphology = {};             // --morphology: wins over files and --set
+  std::vector<std::filesystem::path> files = {};          // --config, applied in order
+  std::vector<std::string> assignments = {};              // --set key.path=value, after the files
+  std::vector<OptionAssignment> option_assignments = {};  // a command's options, after --set
 };
 
 class Config;
