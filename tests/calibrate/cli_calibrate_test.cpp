@@ -8,15 +8,17 @@
 #include <string>
 
 #include "io/csv_table.hpp"
-#include "support/json_schema_check.hpp"
 #include "support/relative_difference.hpp"
 #include "support/run_rbcsim.hpp"
+#include "support/run_result.hpp"
 #include "support/scratch_directory.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using rbcsim::testing::printed_run_result;
 using rbcsim::testing::read_json;
+using rbcsim::testing::result_schema_problems;
 using rbcsim::testing::run_rbcsim;
 using rbcsim::testing::ScratchDirectory;
 
@@ -33,12 +35,7 @@ TEST(CliCalibrate, WritesARunDirectoryWhoseParametersReachTheTargets) {
                                      first.string() + "'",
                                  scratch.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  const auto printed = nlohmann::json::parse(result.out);
-  EXPECT_EQ(printed, read_json(first / "result.json"));
-  EXPECT_EQ(printed["command"], "calibrate");
-  EXPECT_EQ(printed["status"], "ok");
-  const auto schema = read_json(fs::path(RBCSIM_SOURCE_DIR) / "schemas/result.schema.json");
-  EXPECT_EQ(rbcsim::testing::schema_problems(printed, schema), std::vector<std::string>{});
+  const auto printed = printed_run_result(result, first, "calibrate");
   EXPECT_EQ(read_json(first / "config.json")["run"]["command"], "calibrate");
   const auto& calibrate = printed["calibrate"];
   EXPECT_EQ(calibrate["paper"]["hexagonal"]["E_s_uN_per_m"], 29.85);
@@ -79,8 +76,7 @@ TEST(CliCalibrate, StretchFitWritesParametersThatRunTheFittedCurve) {
   EXPECT_NE(fit.out.find("\n  comparison\n    reference"), std::string::npos) << fit.out;
   EXPECT_NE(fit.out.find("    rms_axial_um"), std::string::npos) << fit.out;
   const auto printed = read_json(fit_dir / "result.json");
-  const auto schema = read_json(fs::path(RBCSIM_SOURCE_DIR) / "schemas/result.schema.json");
-  EXPECT_EQ(rbcsim::testing::schema_problems(printed, schema), std::vector<std::string>{});
+  EXPECT_EQ(result_schema_problems(printed), std::vector<std::string>{});
   const auto& stretch_fit = printed["calibrate"]["stretch_fit"];
   EXPECT_EQ(stretch_fit["start_k_link_kBT"], 7.0);
   EXPECT_EQ(stretch_fit["comparison"]["point_count"], 4);

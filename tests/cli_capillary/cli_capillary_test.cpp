@@ -9,13 +9,14 @@
 #include <string>
 
 #include "io/csv_table.hpp"
-#include "support/json_schema_check.hpp"
 #include "support/run_rbcsim.hpp"
+#include "support/run_result.hpp"
 #include "support/scratch_directory.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using rbcsim::testing::printed_run_result;
 using rbcsim::testing::read_json;
 using rbcsim::testing::read_text;
 using rbcsim::testing::run_rbcsim;
@@ -38,12 +39,7 @@ TEST(CliCapillary, WritesTheRunDirectoryAndPrintsItsResultAsJson) {
                                  scratch.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   EXPECT_EQ(result.err, "");  // stderr is not a terminal: no progress
-  const auto printed = nlohmann::json::parse(result.out);
-  EXPECT_EQ(printed, read_json(run_dir / "result.json"));
-  EXPECT_EQ(printed["command"], "capillary");
-  EXPECT_EQ(printed["status"], "ok");
-  const auto schema = read_json(fs::path(RBCSIM_SOURCE_DIR) / "schemas/result.schema.json");
-  EXPECT_EQ(rbcsim::testing::schema_problems(printed, schema), std::vector<std::string>{});
+  const auto printed = printed_run_result(result, run_dir, "capillary");
   const auto& capillary = printed["capillary"];
   EXPECT_EQ(capillary["geometry"], "paper-validation");
   EXPECT_EQ(capillary["passed"], true);
