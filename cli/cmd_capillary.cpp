@@ -79,6 +79,14 @@ void print_summary(const nlohmann::ordered_json& result, const cases::CapillaryR
   std::printf("DI: initial %.4f, peak %.4f at x = %.3g um (t = %.4g s), final %.4f\n",
               run.initial_deformation_index, run.peak_deformation_index, run.peak_centroid_x_um,
               run.peak_time_s, run.final_deformation_index);
+  if (!section["max_triangle_area_deviation"].is_null()) {
+    std::printf(
+        "membrane area (sampled): whole %+.2f to %+.2f %%, largest triangle |dA/A0| %.3f "
+        "(membrane.tau_area is its limit)\n",
+        100.0 * section["min_area_change"].get<double>(),
+        100.0 * section["max_area_change"].get<double>(),
+        section["max_triangle_area_deviation"].get<double>());
+  }
   std::printf("%zu steps (%.4g s simulated, fluid settled in %zu steps): %s\n", run.steps,
               run.time_s, run.fluid_settling_steps, run.stop_reason.c_str());
   std::printf("wall time %.1f s, %d thread(s); run directory %s\n", directory.elapsed_s(),

@@ -180,6 +180,13 @@ CapillarySample sample_of(const coupling::CoupledSimulation& simulation) {
       PhysicalUnit::velocity_m_per_s, mean_velocity(cell.velocities_lu()).x());
   sample.deformation_index = deformation_index(cell.positions_lu());
   sample.extents_um = simulation.frame().dx_um * vertex_extents(cell.positions_lu());
+  std::vector<Vec3> positions_um;
+  positions_um.reserve(cell.vertex_count());
+  for (const auto& position_lu : cell.positions_lu()) {
+    positions_um.push_back(simulation.frame().to_um(position_lu));
+  }
+  sample.area_strain = area_strain(positions_um, cell.model().triangles(),
+                                   cell.model().reference().triangle_areas_um2);
   return sample;
 }
 
@@ -223,8 +230,8 @@ struct SampleLog {
   std::vector<std::size_t> steps;
 };
 
-// Per sample in a checkpoint: its step and its nine numbers.
-constexpr std::size_t kSampleValues = 10;
+// Per sample in a checkpoint: its step and its eleven numbers.
+constexpr std::size_t kSampleValues = 12;
 
 // The samples taken on their interval, as an array of kSampleValues numbers per sample. An
 // interrupted run's observers also see the state reached between two intervals; that sample is
@@ -238,7 +245,8 @@ std::vector<double> flattened(const SampleLog& log, std::size_t interval_steps) 
                   {static_cast<double>(log.steps[i]), sample.time_s, sample.centroid_um.x(),
                    sample.centroid_um.y(), sample.centroid_um.z(), sample.velocity_x_m_per_s,
                    sample.deformation_index, sample.extents_um.x(), sample.extents_um.y(),
-                   sample.extents_um.z()});
+                   sample.extents_um.z(), sample.area_strain.total_relative_change,
+                   sample.area_strain.max_abs_triangle_deviation});
   }
   return values;
 }
@@ -249,7 +257,8 @@ void restore_samples(SampleLog& log, const std::vector<double>& values) {
   for (std::size_t i = 0; i + kSampleValues <= values.size(); i += kSampleValues) {
     const auto* v = values.data() + i;
     log.steps.push_back(static_cast<std::size_t>(v[0]));
-    log.samples.push_back({v[1], Vec3(v[2], v[3], v[4]), v[5], v[6], Vec3(v[7], v[8], v[9])});
+    log.samples.push_back(
+        {v[1], Vec3(v[2], v[3], v[4]), v[5], v[6], Vec3(v[7], v[8], v[9]), {v[10], v[11]}});
   }
 }
 

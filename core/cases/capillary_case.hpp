@@ -75,6 +75,7 @@ struct CapillarySample {
   double velocity_x_m_per_s = 0.0;
   double deformation_index = 0.0;
   Vec3 extents_um = Vec3::Zero();
+  AreaStrain area_strain;
 };
 
 struct CapillaryFlowNumbers {

@@ -1,24 +1,70 @@
 #include "cases/capillary_output.hpp"
 
+#include <algorithm>
+#include <optional>
+
 #include "cases/json_values.hpp"
 
 namespace rbcsim::cases {
 
 std::vector<std::string> capillary_table_columns() {
-  return {"time_s",        "centroid_x_um",      "centroid_y_um",
-          "centroid_z_um", "velocity_x_m_per_s", "deformation_index",
-          "length_x_um",   "length_y_um",        "length_z_um"};
+  return {"time_s",
+          "centroid_x_um",
+          "centroid_y_um",
+          "centroid_z_um",
+          "velocity_x_m_per_s",
+          "deformation_index",
+          "length_x_um",
+          "length_y_um",
+          "length_z_um",
+          "area_change",
+          "max_triangle_area_deviation"};
 }
 
 std::vector<double> capillary_table_row(const CapillarySample& sample) {
-  return {sample.time_s,          sample.centroid_um.x(),    sample.centroid_um.y(),
-          sample.centroid_um.z(), sample.velocity_x_m_per_s, sample.deformation_index,
-          sample.extents_um.x(),  sample.extents_um.y(),     sample.extents_um.z()};
+  return {sample.time_s,
+          sample.centroid_um.x(),
+          sample.centroid_um.y(),
+          sample.centroid_um.z(),
+          sample.velocity_x_m_per_s,
+          sample.deformation_index,
+          sample.extents_um.x(),
+          sample.extents_um.y(),
+          sample.extents_um.z(),
+          sample.area_strain.total_relative_change,
+          sample.area_strain.max_abs_triangle_deviation};
 }
+
+namespace {
+
+// The extremes of the sampled area strain: the largest triangle deviation and the range of the
+// whole membrane's change; nulls when nothing was sampled (a run that failed before its release).
+struct SampledAreaStrain {
+  std::optional<double> max_triangle_deviation;
+  std::optional<double> min_change;
+  std::optional<double> max_change;
+};
+
+SampledAreaStrain sampled_area_strain(const std::vector<CapillarySample>& samples) {
+  SampledAreaStrain extremes;
+  for (const auto& sample : samples) {
+    const auto& strain = sample.area_strain;
+    extremes.max_triangle_deviation =
+        std::max(extremes.max_triangle_deviation.value_or(0.0), strain.max_abs_triangle_deviation);
+    extremes.min_change = std::min(extremes.min_change.value_or(strain.total_relative_change),
+                                   strain.total_relative_change);
+    extremes.max_change = std::max(extremes.max_change.value_or(strain.total_relative_change),
+                                   strain.total_relative_change);
+  }
+  return extremes;
+}
+
+}  // namespace
 
 nlohmann::ordered_json capillary_result_section(const CapillaryDescription& description,
                                                 const CapillaryRun& run) {
   const auto& numbers = run.numbers;
+  const auto area_strain = sampled_area_strain(run.samples);
   return {
       {"geometry", description.geometry},
       {"inflow", "velocity-inlet"},
@@ -41,6 +87,9 @@ nlohmann::ordered_json capillary_result_section(const CapillaryDescription& desc
       {"peak_centroid_x_um", run.peak_centroid_x_um},
       {"final_deformation_index", run.final_deformation_index},
       {"final_centroid_x_um", run.final_centroid_x_um},
+      {"max_triangle_area_deviation", optional_number(area_strain.max_triangle_deviation)},
+      {"min_area_change", optional_number(area_strain.min_change)},
+      {"max_area_change", optional_number(area_strain.max_change)},
       {"simulated_time_s", run.time_s},
       {"steps", run.steps},
       {"fluid_settling_steps", run.fluid_settling_steps},

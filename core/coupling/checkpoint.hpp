@@ -27,8 +27,9 @@ namespace rbcsim::coupling {
 
 class CoupledSimulation;
 
+// Version 3: a capillary sample holds its area strain too (12 numbers, version 2: 10).
 // Version 2: the populations are stored in the kernel's layout (version 1: streamed to natural).
-inline constexpr std::uint32_t kCheckpointVersion = 2;
+inline constexpr std::uint32_t kCheckpointVersion = 3;
 inline constexpr const char* kCheckpointFileName = "checkpoint.bin";
 
 void write_checkpoint(const std::filesystem::path& file, const CoupledSimulation& simulation,

@@ -57,6 +57,21 @@ TEST(CliCapillary, WritesTheRunDirectoryAndPrintsItsResultAsJson) {
   EXPECT_EQ(table.numbers("deformation_index").size(), time_s.size());
   EXPECT_EQ(table.numbers("centroid_z_um").size(), time_s.size());
   EXPECT_EQ(table.numbers("velocity_x_m_per_s").front(), 0.0);  // released at rest
+  // The area strain: none at release (to the round-off of placing the cell in lattice units and
+  // back); the result's extremes are the table's (both written to 17 digits).
+  const auto area_change = table.numbers("area_change");
+  const auto triangle_deviation = table.numbers("max_triangle_area_deviation");
+  EXPECT_NEAR(area_change.front(), 0.0, 1e-13);
+  EXPECT_NEAR(triangle_deviation.front(), 0.0, 1e-13);
+  EXPECT_EQ(capillary["min_area_change"].get<double>(),
+            *std::min_element(area_change.begin(), area_change.end()));
+  EXPECT_EQ(capillary["max_area_change"].get<double>(),
+            *std::max_element(area_change.begin(), area_change.end()));
+  const double largest_deviation =
+      *std::max_element(triangle_deviation.begin(), triangle_deviation.end());
+  EXPECT_EQ(capillary["max_triangle_area_deviation"].get<double>(), largest_deviation);
+  EXPECT_GT(largest_deviation, 0.0);
+  EXPECT_LT(largest_deviation, 0.3);  // below membrane.tau_area, or the run would have failed
   for (const auto* file : {"cell0.pvd", "fluid.pvd"}) {
     EXPECT_NE(read_text(run_dir / file).find("<DataSet"), std::string::npos) << file;
   }

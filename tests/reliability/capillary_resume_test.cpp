@@ -79,6 +79,9 @@ void expect_same(const CapillarySample& resumed, const CapillarySample& straight
   EXPECT_EQ(resumed.velocity_x_m_per_s, straight.velocity_x_m_per_s);
   EXPECT_EQ(resumed.deformation_index, straight.deformation_index);
   expect_same(resumed.extents_um, straight.extents_um);
+  EXPECT_EQ(resumed.area_strain.total_relative_change, straight.area_strain.total_relative_change);
+  EXPECT_EQ(resumed.area_strain.max_abs_triangle_deviation,
+            straight.area_strain.max_abs_triangle_deviation);
 }
 
 TEST(CapillaryResume, InterruptedThenResumedRunEndsAsAStraightRun) {
