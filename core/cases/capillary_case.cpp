@@ -185,8 +185,8 @@ CapillarySample sample_of(const coupling::CoupledSimulation& simulation) {
   for (const auto& position_lu : cell.positions_lu()) {
     positions_um.push_back(simulation.frame().to_um(position_lu));
   }
-  sample.area_strain = area_strain(positions_um, cell.model().triangles(),
-                                   cell.model().reference().triangle_areas_um2);
+  sample.area_strain = mesh::area_strain(positions_um, cell.model().triangles(),
+                                         cell.model().reference().triangle_areas_um2);
   return sample;
 }
 

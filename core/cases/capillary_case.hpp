@@ -27,6 +27,7 @@
 #include "coupling/coupled_simulation.hpp"
 #include "geometry/wall_shape.hpp"
 #include "membrane/parameters.hpp"
+#include "mesh/geometry.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "units/unit_converter.hpp"
 
@@ -75,7 +76,7 @@ struct CapillarySample {
   double velocity_x_m_per_s = 0.0;
   double deformation_index = 0.0;
   Vec3 extents_um = Vec3::Zero();
-  AreaStrain area_strain;
+  mesh::AreaStrain area_strain;
 };
 
 struct CapillaryFlowNumbers {

@@ -1,12 +1,9 @@
 #include "cases/capillary_observables.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <vector>
-
-#include "mesh/geometry.hpp"
 
 namespace rbcsim::cases {
 namespace {
@@ -46,29 +43,6 @@ double deformation_index(std::span<const Vec3> positions) {
 }
 
 Vec3 mean_velocity(std::span<const Vec3> velocities) { return vertex_centroid(velocities); }
-
-AreaStrain area_strain(std::span<const Vec3> positions, std::span<const mesh::Triangle> triangles,
-                       std::span<const double> reference_areas) {
-  if (triangles.size() != reference_areas.size()) {
-    throw std::invalid_argument("area strain: one reference area per triangle is needed");
-  }
-  AreaStrain strain;
-  double area = 0.0;
-  double reference_area = 0.0;
-  for (std::size_t t = 0; t < triangles.size(); ++t) {
-    if (!(reference_areas[t] > 0.0)) {
-      throw std::invalid_argument("area strain: a reference area is not positive");
-    }
-    const double triangle_area = mesh::triangle_area_um2(positions, triangles[t]);
-    area += triangle_area;
-    reference_area += reference_areas[t];
-    strain.max_abs_triangle_deviation =
-        std::max(strain.max_abs_triangle_deviation,
-                 std::abs(triangle_area - reference_areas[t]) / reference_areas[t]);
-  }
-  strain.total_relative_change = (area - reference_area) / reference_area;
-  return strain;
-}
 
 double reynolds_number(double mean_velocity_m_per_s, double diameter_um,
                        double kinematic_viscosity_m2_per_s) {

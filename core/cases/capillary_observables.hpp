@@ -14,7 +14,6 @@
 
 #include "common/state_archive.hpp"
 #include "common/vec3.hpp"
-#include "mesh/triangle_mesh.hpp"
 
 namespace rbcsim::cases {
 
@@ -25,20 +24,6 @@ Vec3 vertex_extents(std::span<const Vec3> positions);
 double deformation_index(std::span<const Vec3> positions);
 // Mean of the vertex velocities: the centroid's velocity when vertices move with x += u dt.
 Vec3 mean_velocity(std::span<const Vec3> velocities);
-
-// How far the membrane's area has moved from the stress-free reference. The local-area term
-// (Eq. 8) resists d = (A - A0) / A0 of each triangle and is singular at |d| = tau_a (Table 2: 0.3),
-// so max_abs_triangle_deviation says how near a run is to that limit; total_relative_change is the
-// whole membrane's (A - A0) / A0, which Table 2's weak k_a leaves free to change by several
-// percent (a real cell's lipid bilayer keeps it within a few percent).
-struct AreaStrain {
-  double total_relative_change = 0.0;
-  double max_abs_triangle_deviation = 0.0;
-};
-// `reference_areas` holds A0 per triangle, in the square of the positions' unit. Throws
-// std::invalid_argument when the counts differ or a reference area is not positive.
-AreaStrain area_strain(std::span<const Vec3> positions, std::span<const mesh::Triangle> triangles,
-                       std::span<const double> reference_areas);
 
 // Reynolds number U D / nu of the inflow: mean inlet velocity, inlet diameter.
 double reynolds_number(double mean_velocity_m_per_s, double diameter_um,

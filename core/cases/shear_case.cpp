@@ -240,7 +240,8 @@ std::size_t tracked_vertex(const mesh::TriangleMesh& cell) {
       p.begin());
 }
 
-// The smoothness and roughness of the cell's surface now (shear_observables.hpp).
+// The smoothness and roughness of the cell's surface now (shear_observables.hpp), and its area
+// strain.
 void measure_surface(const membrane::MembraneModel& model, std::span<const Vec3> positions_um,
                      ShearPoint& point) {
   membrane::CellGeometry geometry(model.topology().triangle_count(), model.topology().edge_count());
@@ -249,6 +250,8 @@ void measure_surface(const membrane::MembraneModel& model, std::span<const Vec3>
   point.smoothness_rad = dihedral_change_rms_rad(geometry.dihedral_angles_rad, reference_rad);
   point.roughness_rad =
       dihedral_roughness_rad(geometry.dihedral_angles_rad, reference_rad, model.topology());
+  point.area_strain =
+      mesh::area_strain(positions_um, model.triangles(), model.reference().triangle_areas_um2);
 }
 
 std::size_t steps_for(double strain, double strain_rate_lu) {

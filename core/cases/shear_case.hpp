@@ -53,6 +53,7 @@
 #include "coupling/coupled_simulation.hpp"
 #include "lattice/fluid_solver.hpp"
 #include "membrane/membrane_model.hpp"
+#include "mesh/geometry.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "units/unit_converter.hpp"
 
@@ -152,6 +153,8 @@ struct ShearPoint {
   double tank_treading_hz = 0.0;  // physical; 0 at rate 0
   double smoothness_rad = 0.0;    // dihedral_change_rms_rad: overall and mesh-scale bending
   double roughness_rad = 0.0;     // dihedral_roughness_rad: the mesh-scale part only
+  // Of the final shape against the stress-free one: how near the local-area term's limit.
+  mesh::AreaStrain area_strain;
   bool steady = false;
   double strain = 0.0;  // simulated rate * simulated time (rate 0: in its time unit)
   double time_s = 0.0;  // physical time: the simulated time times the viscosity scale

@@ -25,6 +25,8 @@ nlohmann::ordered_json rate_entry(const ShearPoint& point) {
       {"tank_treading_hz", number_or_null(point.tank_treading_hz)},
       {"smoothness_rad", number_or_null(point.smoothness_rad)},
       {"roughness_rad", number_or_null(point.roughness_rad)},
+      {"area_change", number_or_null(point.area_strain.total_relative_change)},
+      {"max_triangle_area_deviation", number_or_null(point.area_strain.max_abs_triangle_deviation)},
       {"steady", point.steady},
       {"simulated_shear_rate_per_s", plan.simulated_shear_rate_per_s},
       {"simulated_kinematic_viscosity_m2_per_s", plan.simulated_kinematic_viscosity_m2_per_s},
@@ -77,6 +79,7 @@ ShearPoint shear_point_from_record(const nlohmann::json& record, const std::stri
   point.tank_treading_hz = number("tank_treading_hz");
   point.smoothness_rad = number("smoothness_rad");
   point.roughness_rad = number("roughness_rad");
+  point.area_strain = {number("area_change"), number("max_triangle_area_deviation")};
   point.steady = record.value("steady", false);
   point.strain = number("strain");
   point.time_s = number("time_s");
@@ -98,6 +101,8 @@ std::vector<std::string> shear_table_columns() {
           "tank_treading_hz",
           "smoothness_rad",
           "roughness_rad",
+          "area_change",
+          "max_triangle_area_deviation",
           "steady",
           "simulated_shear_rate_per_s",
           "simulated_kinematic_viscosity_m2_per_s",
@@ -120,6 +125,8 @@ std::vector<double> shear_table_row(const ShearPoint& point) {
           point.tank_treading_hz,
           point.smoothness_rad,
           point.roughness_rad,
+          point.area_strain.total_relative_change,
+          point.area_strain.max_abs_triangle_deviation,
           point.steady ? 1.0 : 0.0,
           plan.simulated_shear_rate_per_s,
           plan.simulated_kinematic_viscosity_m2_per_s,

@@ -1,7 +1,9 @@
 #include "mesh/geometry.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace rbcsim::mesh {
 
@@ -21,6 +23,29 @@ double surface_area_um2(const TriangleMesh& mesh) {
   for (const auto& triangle : mesh.triangles)
     area += triangle_area_um2(mesh.positions_um, triangle);
   return area;
+}
+
+AreaStrain area_strain(std::span<const Vec3> positions, std::span<const Triangle> triangles,
+                       std::span<const double> reference_areas) {
+  if (triangles.size() != reference_areas.size()) {
+    throw std::invalid_argument("area strain: one reference area per triangle is needed");
+  }
+  AreaStrain strain;
+  double area = 0.0;
+  double reference_area = 0.0;
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    if (!(reference_areas[t] > 0.0)) {
+      throw std::invalid_argument("area strain: a reference area is not positive");
+    }
+    const double triangle_area = triangle_area_um2(positions, triangles[t]);
+    area += triangle_area;
+    reference_area += reference_areas[t];
+    strain.max_abs_triangle_deviation =
+        std::max(strain.max_abs_triangle_deviation,
+                 std::abs(triangle_area - reference_areas[t]) / reference_areas[t]);
+  }
+  strain.total_relative_change = (area - reference_area) / reference_area;
+  return strain;
 }
 
 double enclosed_volume_um3(const TriangleMesh& mesh) {

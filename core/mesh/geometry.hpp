@@ -14,6 +14,20 @@ Vec3 triangle_area_vector(std::span<const Vec3> positions_um, const Triangle& tr
 double triangle_area_um2(std::span<const Vec3> positions_um, const Triangle& triangle);
 
 double surface_area_um2(const TriangleMesh& mesh);
+
+// How far a membrane's area has moved from a reference (usually the stress-free shape): the
+// largest d = |A - A0| / A0 of a triangle, the local-area term's measure (Eq. 8, singular at
+// tau_a), and the whole surface's (A - A0) / A0, which a real cell's lipid bilayer keeps within a
+// few percent.
+struct AreaStrain {
+  double total_relative_change = 0.0;
+  double max_abs_triangle_deviation = 0.0;
+};
+// `reference_areas` holds A0 per triangle, in the square of the positions' unit. Throws
+// std::invalid_argument when the counts differ or a reference area is not positive.
+AreaStrain area_strain(std::span<const Vec3> positions, std::span<const Triangle> triangles,
+                       std::span<const double> reference_areas);
+
 // Signed volume by the divergence theorem: positive for outward-oriented closed meshes.
 double enclosed_volume_um3(const TriangleMesh& mesh);
 // v = 6 sqrt(pi) V / A^(3/2): 1 for a sphere, ~0.64 for a discocyte.

@@ -172,6 +172,10 @@ TEST(ShearRun, RestKeepsTheDiameterAndShearStretches) {
   EXPECT_GT(points[1].tank_treading_hz, 0.0);
   EXPECT_LT(points[0].smoothness_rad, 0.01);
   EXPECT_LT(points[0].roughness_rad, points[0].smoothness_rad);
+  // At rest the membrane keeps its triangles' areas; sheared, it does not.
+  EXPECT_LT(points[0].area_strain.max_abs_triangle_deviation, 0.01);
+  EXPECT_GT(points[1].area_strain.max_abs_triangle_deviation,
+            2.0 * points[0].area_strain.max_abs_triangle_deviation);
   EXPECT_GT(points[1].shape.length_um, 1.03 * diameter_um);
   EXPECT_FALSE(points[1].steady);  // 4 strains are too few
   EXPECT_NEAR(points[1].strain, 4.0, 0.01);

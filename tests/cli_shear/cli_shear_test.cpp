@@ -59,6 +59,8 @@ TEST(CliShear, WritesTheRunDirectoryAndPrintsItsResultAsJson) {
   const auto table = rbcsim::io::read_csv_file(run_dir / "shear.csv");
   EXPECT_EQ(table.numbers("shear_rate_per_s"), (std::vector<double>{0, 500}));
   EXPECT_EQ(table.numbers("length_um")[1], shear["rates"][1]["length_um"].get<double>());
+  EXPECT_EQ(table.numbers("max_triangle_area_deviation")[1],
+            shear["rates"][1]["max_triangle_area_deviation"].get<double>());
   EXPECT_TRUE(fs::exists(run_dir / "shapes/shear_000.vtp"));
   EXPECT_TRUE(fs::exists(run_dir / "shapes/shear_001.vtp"));
   // Four samples per unit strain; the last within a sample interval of the end, where the shape is

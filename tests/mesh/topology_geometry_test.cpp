@@ -1,9 +1,11 @@
 // Topology and geometry measures on solids whose answers are known in closed form.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include "mesh/geometry.hpp"
 #include "mesh/topology.hpp"
@@ -74,6 +76,39 @@ TEST(Geometry, OctahedronAreaVolumeAndDihedralAngles) {
   const auto sums = rbcsim::mesh::curvature_sums(mesh.positions_um, topology);
   EXPECT_NEAR(sums.signed_um, 12 * 0.5 * edge_um * expected_angle, 1e-12);
   EXPECT_NEAR(sums.absolute_um, sums.signed_um, 1e-12);
+}
+
+// A face with corners on the half-axes a, b, c has area sqrt(a^2 b^2 + b^2 c^2 + c^2 a^2) / 2:
+// sqrt(3) / 2 on the unit octahedron, the reference here.
+TEST(Geometry, AreaStrainOfAnOctahedronAgainstTheUnitOne) {
+  const auto mesh = octahedron();
+  const std::vector<double> reference(8, std::sqrt(3.0) / 2.0);
+  const auto strain_of = [&](std::vector<Vec3> positions) {
+    return rbcsim::mesh::area_strain(positions, mesh.triangles, reference);
+  };
+  std::vector<Vec3> moved = mesh.positions_um;
+  const Eigen::AngleAxisd turn(0.7, Vec3(1.0, 2.0, -0.5).normalized());
+  for (auto& position : moved) position = turn * position + Vec3(7.0, -2.0, 3.0);
+  EXPECT_NEAR(strain_of(moved).total_relative_change, 0.0, 1e-15);
+  EXPECT_NEAR(strain_of(moved).max_abs_triangle_deviation, 0.0, 1e-15);
+
+  std::vector<Vec3> scaled = mesh.positions_um;
+  for (auto& position : scaled) position *= 0.9;
+  EXPECT_NEAR(strain_of(scaled).total_relative_change, 0.81 - 1.0, 1e-15);
+  EXPECT_NEAR(strain_of(scaled).max_abs_triangle_deviation, 0.19, 1e-15);  // compressed: |d|
+
+  // Only the +x corner pulled out to 2: its four faces have area sqrt(9) / 2 = 1.5, the other
+  // four keep theirs.
+  std::vector<Vec3> pulled = mesh.positions_um;
+  pulled[0].x() = 2.0;
+  const double face_deviation = 1.5 / (std::sqrt(3.0) / 2.0) - 1.0;
+  EXPECT_NEAR(strain_of(pulled).max_abs_triangle_deviation, face_deviation, 1e-15);
+  EXPECT_NEAR(strain_of(pulled).total_relative_change, face_deviation / 2.0, 1e-15);
+
+  EXPECT_THROW(rbcsim::mesh::area_strain(pulled, mesh.triangles, std::vector<double>(7, 1.0)),
+               std::invalid_argument);
+  EXPECT_THROW(rbcsim::mesh::area_strain(pulled, mesh.triangles, std::vector<double>(8, 0.0)),
+               std::invalid_argument);
 }
 
 TEST(Geometry, InsideOutMeshHasNegativeVolumeAndAngles) {

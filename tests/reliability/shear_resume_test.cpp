@@ -89,6 +89,9 @@ void expect_same(const ShearPoint& resumed, const ShearPoint& straight) {
   EXPECT_EQ(resumed.shape.inclination_deg, straight.shape.inclination_deg);
   EXPECT_EQ(resumed.smoothness_rad, straight.smoothness_rad);
   EXPECT_EQ(resumed.roughness_rad, straight.roughness_rad);
+  EXPECT_EQ(resumed.area_strain.total_relative_change, straight.area_strain.total_relative_change);
+  EXPECT_EQ(resumed.area_strain.max_abs_triangle_deviation,
+            straight.area_strain.max_abs_triangle_deviation);
   EXPECT_EQ(resumed.tank_treading_hz, straight.tank_treading_hz);
   ASSERT_EQ(resumed.history.size(), straight.history.size());
   for (std::size_t i = 0; i < straight.history.size(); ++i) {
