@@ -180,12 +180,7 @@ CapillarySample sample_of(const coupling::CoupledSimulation& simulation) {
       PhysicalUnit::velocity_m_per_s, mean_velocity(cell.velocities_lu()).x());
   sample.deformation_index = deformation_index(cell.positions_lu());
   sample.extents_um = simulation.frame().dx_um * vertex_extents(cell.positions_lu());
-  std::vector<Vec3> positions_um;
-  positions_um.reserve(cell.vertex_count());
-  for (const auto& position_lu : cell.positions_lu()) {
-    positions_um.push_back(simulation.frame().to_um(position_lu));
-  }
-  sample.area_strain = mesh::area_strain(positions_um, cell.model().triangles(),
+  sample.area_strain = mesh::area_strain(simulation.positions_now_um(0), cell.model().triangles(),
                                          cell.model().reference().triangle_areas_um2);
   return sample;
 }

@@ -23,15 +23,6 @@ using coupling::CoupledSimulation;
 // The lattice speed of sound, 1/sqrt(3): Mach = u / c_s.
 const double kLatticeSoundSpeed = 1.0 / std::sqrt(3.0);
 
-std::vector<Vec3> current_positions_um(const CoupledSimulation& simulation) {
-  std::vector<Vec3> positions_um;
-  positions_um.reserve(simulation.cell(0).vertex_count());
-  for (const Vec3& position_lu : simulation.cell(0).positions_lu()) {
-    positions_um.push_back(simulation.frame().to_um(position_lu));
-  }
-  return positions_um;
-}
-
 // One force's stop: both diameters steady, or the force's time is up. Restarted at every force,
 // so that one criterion serves the whole curve of one simulation; its deadline and the
 // steady-state checks ride in the checkpoint.
@@ -43,11 +34,11 @@ class ForceStop final : public coupling::StopCriterion {
     deadline_s_ = now_s + settings_.max_time_per_force_s;
     axial_ = coupling::stop_at_steady_state(
         "the axial diameter",
-        [](const CoupledSimulation& s) { return axial_diameter_um(current_positions_um(s)); },
+        [](const CoupledSimulation& s) { return axial_diameter_um(s.positions_now_um(0)); },
         settings_.steady);
     transverse_ = coupling::stop_at_steady_state(
         "the transverse diameter",
-        [](const CoupledSimulation& s) { return transverse_diameter_um(current_positions_um(s)); },
+        [](const CoupledSimulation& s) { return transverse_diameter_um(s.positions_now_um(0)); },
         settings_.steady);
     steady_ = false;
   }
@@ -340,7 +331,7 @@ StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const Stretch
     }
     progress.force_started = false;
     point.wall_time_s = seconds_since(progress.start.wall_clock);
-    const auto positions_um = current_positions_um(*simulation);
+    const auto positions_um = simulation->positions_now_um(0);
     measure_point(*simulation, positions_um, progress.start, point);
     progress.points.push_back(point);
     if (observer) {

@@ -84,14 +84,6 @@ units::UnitConverter simulated_units(const ShearEngine& engine, const ShearRateP
   return units::UnitConverter(lattice);
 }
 
-std::vector<Vec3> positions_now_um(const coupling::CoupledSimulation& simulation) {
-  std::vector<Vec3> positions;
-  for (const Vec3& p : simulation.cell(0).positions_lu()) {
-    positions.push_back(simulation.frame().to_um(p));
-  }
-  return positions;
-}
-
 // What ShearRecord needs to know of its rate.
 struct RecordSetup {
   std::size_t tracked_vertex = 0;
@@ -195,7 +187,7 @@ class ShearRecord final : public coupling::StopCriterion {
     angles_rad_.push_back(angles_rad_.empty() ? angle
                                               : unwrap_angle_rad(angles_rad_.back(), angle));
     times_s_.push_back(simulation.time_s());
-    shapes_.push_back(measure_shear_shape(positions_now_um(simulation)));
+    shapes_.push_back(measure_shear_shape(simulation.positions_now_um(0)));
   }
 
   // Samples per window: the tracked point's last half turn (one swinging period) but one check
@@ -421,7 +413,7 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
   }
   // From the simulation's counters (restored on resume), not from this run() call's summary.
   point.force_cap_steps = simulation.capped_steps_per_cell().at(0);
-  const auto positions_um = positions_now_um(simulation);
+  const auto positions_um = simulation.positions_now_um(0);
   if (const auto averaged = record.averaged_shape()) {
     point.shape = averaged->first.mean;
     point.length_swing_um = averaged->first.length_swing_um;

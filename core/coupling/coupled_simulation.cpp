@@ -101,6 +101,14 @@ double CoupledSimulation::time_s() const {
   return units_.to_physical(units::PhysicalUnit::time_s, static_cast<double>(time_step_));
 }
 
+std::vector<Vec3> CoupledSimulation::positions_now_um(std::size_t cell_index) const {
+  const auto positions_lu = cell(cell_index).positions_lu();
+  std::vector<Vec3> positions_um;
+  positions_um.reserve(positions_lu.size());
+  for (const Vec3& position_lu : positions_lu) positions_um.push_back(frame_.to_um(position_lu));
+  return positions_um;
+}
+
 std::vector<std::size_t> CoupledSimulation::capped_steps_per_cell() const {
   std::vector<std::size_t> steps;
   for (const auto& monitor : force_cap_monitors_) steps.push_back(monitor.steps_with_capping());

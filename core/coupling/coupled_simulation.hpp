@@ -136,6 +136,8 @@ class CoupledSimulation {
   const lattice::FluidSolver& fluid() const { return *fluid_; }
   std::span<const Cell> cells() const { return cells_; }
   const Cell& cell(std::size_t index) const { return cells_.at(index); }
+  // Where a cell's vertices are now (after the latest step), in um: what observers measure.
+  std::vector<Vec3> positions_now_um(std::size_t cell_index) const;
   const units::UnitConverter& units() const { return units_; }
   const LatticeFrame& frame() const { return frame_; }
   const ibm::GridView& grid_view() const { return grid_; }
