@@ -46,17 +46,17 @@ struct SampledAreaStrain {
 };
 
 SampledAreaStrain sampled_area_strain(const std::vector<CapillarySample>& samples) {
-  SampledAreaStrain extremes;
+  if (samples.empty()) return {};
+  double max_triangle_deviation = 0.0;
+  double min_change = samples.front().area_strain.total_relative_change;
+  double max_change = min_change;
   for (const auto& sample : samples) {
     const auto& strain = sample.area_strain;
-    extremes.max_triangle_deviation =
-        std::max(extremes.max_triangle_deviation.value_or(0.0), strain.max_abs_triangle_deviation);
-    extremes.min_change = std::min(extremes.min_change.value_or(strain.total_relative_change),
-                                   strain.total_relative_change);
-    extremes.max_change = std::max(extremes.max_change.value_or(strain.total_relative_change),
-                                   strain.total_relative_change);
+    max_triangle_deviation = std::max(max_triangle_deviation, strain.max_abs_triangle_deviation);
+    min_change = std::min(min_change, strain.total_relative_change);
+    max_change = std::max(max_change, strain.total_relative_change);
   }
-  return extremes;
+  return {max_triangle_deviation, min_change, max_change};
 }
 
 }  // namespace

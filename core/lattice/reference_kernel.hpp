@@ -28,8 +28,8 @@ void collide_reference(const LatticeSetup& setup, FluidArrays& arrays,
 
 // Streaming of the post-collision populations `post` (natural layout, laid out as
 // arrays.populations) into the pre-collision populations `pre` of the fluid nodes, with every
-// boundary rule. `arrays` supplies the density
-// and velocity of the collision that produced `post`; `arrival_time` sets the Lees-Edwards offset.
+// boundary rule. `arrays` supplies the density and velocity of the collision that produced
+// `post`; `arrival_time` sets the Lees-Edwards offset.
 void stream_reference(const LatticeSetup& setup, const FluidArrays& arrays,
                       const std::vector<double>& post, std::vector<double>& pre,
                       std::size_t arrival_time);

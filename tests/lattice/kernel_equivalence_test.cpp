@@ -159,8 +159,6 @@ const std::vector<Scenario> kScenarios = {{true, false, true, "trt"},
                                           {true, false, true, "trt", "bouzidi"},
                                           {false, true, true, "bgk", "bouzidi"}};
 
-// Seven steps: the AA kernel is compared after local and after streaming steps, whose
-// populations are recovered from the swapped layout.
 // The padding between population arrays (fluid_kernel.hpp): every array holds its nodes, starts
 // on a cache line, and the stride is an odd number of lines, so that 19 arrays never share their
 // cache sets, also when the node count is a power of two (128^3).
@@ -186,6 +184,8 @@ TEST(PopulationStride, PackedPopulationsRoundTrip) {
   EXPECT_EQ(packed_populations(arrays), packed);
 }
 
+// Seven steps: the AA kernel is compared after local and after streaming steps, whose
+// populations are recovered from the swapped layout.
 TEST(KernelEquivalence, OptimisedMatchesReferenceWithEveryBoundary) {
   for (const auto& scenario : kScenarios) {
     FluidSolver geometry(kGrid, {});
