@@ -18,7 +18,8 @@ class TimeLimit final : public StopCriterion {
   std::optional<std::string> check(const CoupledSimulation& simulation) override {
     // The relative slack absorbs the round-off of steps * dt against a time given in seconds.
     if (simulation.time_s() < time_s_ * (1.0 - 1e-12)) return std::nullopt;
-    return "reached the time limit of " + format_number(time_s_) + " s";
+    // Often computed (a strain over a shear rate), so its last bits are noise: six digits.
+    return "reached the time limit of " + format_significant(time_s_, 6) + " s";
   }
 
  private:
@@ -72,9 +73,9 @@ class SteadyState final : public StopCriterion {
     last_check_s_ = now_s;
     last_value_ = value;
     if (steady_checks_ < tolerance_.consecutive_checks) return std::nullopt;
-    return "steady state of " + name_ + " (" + format_number(value) + "; relative change below " +
-           format_number(tolerance_.relative_rate_per_s) + " per s over " +
-           std::to_string(steady_checks_) + " checks)";
+    return "steady state of " + name_ + " (" + format_significant(value, 6) +
+           "; relative change below " + format_number(tolerance_.relative_rate_per_s) +
+           " per s over " + std::to_string(steady_checks_) + " checks)";
   }
   // last_check_s, last_value, steady_checks; no check yet: an empty array.
   void save_state(StateArchive& archive, const std::string& prefix) const override {
