@@ -22,6 +22,7 @@ caption { caption-side: top; text-align: left; font-weight: 600; padding-bottom:
 th, td { border: 1px solid #cccccc; padding: 0.2rem 0.55rem; text-align: left; vertical-align: top; }
 th { background: #f1f3f5; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
+td.prose { min-width: 24em; }
 tbody tr:nth-child(even) { background: #fafafa; }
 .figures { display: flex; flex-wrap: wrap; gap: 0.5rem 2rem; align-items: flex-start; }
 figure { flex: 0 1 620px; margin: 1rem 0; }
@@ -29,6 +30,13 @@ figcaption { color: #444444; font-size: 0.88rem; }
 svg.plot { width: 100%; height: auto; background: #ffffff; }
 details { margin: 0.3rem 0; }
 summary { cursor: pointer; }
+@media print {
+  @page { size: landscape; }
+  body { max-width: none; padding: 0; }
+  .table-wrap { overflow-x: visible; }
+  table { font-size: 0.62rem; }
+  td.prose { min-width: 12em; }
+}
 )";
 
 bool is_numeric_cell(std::string_view cell) {
@@ -48,12 +56,31 @@ bool is_numeric_column(const Table& table, std::size_t column) {
   return any_number;
 }
 
+// Numbers align right; a sentence (a stop reason, say) gets a minimum width, so that a wide
+// table squeezing its column does not stretch the row to a dozen lines.
+std::string_view cell_tag(std::string_view cell, bool numeric_column) {
+  constexpr std::size_t kProseCharacters = 40;
+  if (numeric_column) return "<td class=\"num\">";
+  return cell.size() > kProseCharacters ? "<td class=\"prose\">" : "<td>";
+}
+
+// A header is often a JSON key ("max_triangle_area_deviation"); a line-break opportunity after
+// each underscore lets its column be as narrow as its longest word, not its whole key.
+std::string breakable_key(std::string_view header) {
+  std::string html;
+  for (const char c : escape_xml(header)) {
+    html += c;
+    if (c == '_') html += "<wbr/>";
+  }
+  return html;
+}
+
 std::string html_table(const Table& table) {
   std::string html = "<div class=\"table-wrap\"><table>\n";
   if (!table.caption.empty())
     html += concat("<caption>", escape_xml(table.caption), "</caption>\n");
   html += "<thead><tr>";
-  for (const auto& header : table.headers) html += concat("<th>", escape_xml(header), "</th>");
+  for (const auto& header : table.headers) html += concat("<th>", breakable_key(header), "</th>");
   html += "</tr></thead>\n<tbody>\n";
   std::vector<bool> numeric;
   for (std::size_t column = 0; column < table.headers.size(); ++column) {
@@ -62,8 +89,7 @@ std::string html_table(const Table& table) {
   for (const auto& row : table.rows) {
     html += "<tr>";
     for (std::size_t column = 0; column < row.size(); ++column) {
-      html +=
-          concat(numeric[column] ? "<td class=\"num\">" : "<td>", escape_xml(row[column]), "</td>");
+      html += concat(cell_tag(row[column], numeric[column]), escape_xml(row[column]), "</td>");
     }
     html += "</tr>\n";
   }
