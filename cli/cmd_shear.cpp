@@ -117,19 +117,26 @@ std::vector<io::PvdEntry> shape_entries(const std::vector<cases::ShearPoint>& po
   return entries;
 }
 
+// The highest rate that ran to its end; a failed rate's shape is the one it broke in, not a
+// result. Failed rates are counted apart from the unsteady ones.
 nlohmann::ordered_json headline(const std::vector<cases::ShearPoint>& points) {
   nlohmann::ordered_json numbers = nlohmann::ordered_json::object();
-  const auto highest =
-      std::max_element(points.begin(), points.end(), [](const auto& a, const auto& b) {
-        return a.plan.shear_rate_per_s < b.plan.shear_rate_per_s;
-      });
-  if (highest != points.end() && std::isfinite(highest->shape.length_um)) {
+  const cases::ShearPoint* highest = nullptr;
+  for (const auto& point : points) {
+    if (!point.failure.empty()) continue;
+    if (!highest || point.plan.shear_rate_per_s > highest->plan.shear_rate_per_s) highest = &point;
+  }
+  if (highest) {
     numbers["max_shear_rate_per_s"] = highest->plan.shear_rate_per_s;
     numbers["length_um_at_max_rate"] = highest->shape.length_um;
     numbers["deformation_index_at_max_rate"] = highest->shape.deformation_index;
   }
+  const auto failed = std::count_if(points.begin(), points.end(),
+                                    [](const auto& point) { return !point.failure.empty(); });
   numbers["unsteady_rate_count"] =
-      std::count_if(points.begin(), points.end(), [](const auto& p) { return !p.steady; });
+      std::count_if(points.begin(), points.end(), [](const auto& point) { return !point.steady; }) -
+      failed;
+  numbers["failed_rate_count"] = failed;
   return numbers;
 }
 

@@ -122,4 +122,31 @@ TEST(CliShear, InstabilityExitsOneAndRecordsTheFailure) {
   EXPECT_EQ(result_schema_problems(written), std::vector<std::string>{});
 }
 
+// A rate that fails is not the sweep's headline: the highest rate that finished is. Here the
+// local-area limit is lowered to 0.02, which the cell at rest never nears (d ~ 1e-15) and the
+// cell at 2000 1/s crosses within a few dozen steps.
+TEST(CliShear, HeadlineIsTheHighestRateThatFinished) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const auto result = run_rbcsim(std::string(kCoarseRun) +
+                                     "--rates 0,2000 --set membrane.tau_area=0.02 --output '" +
+                                     run_dir.string() + "'",
+                                 scratch.path());
+  EXPECT_EQ(result.exit_code, 1);
+  EXPECT_NE(result.err.find("rate 2000 1/s: step "), std::string::npos) << result.err;
+  const auto written = read_json(run_dir / "result.json");
+  EXPECT_EQ(written["status"], "failed");
+  const auto& rates = written["shear"]["rates"];
+  ASSERT_EQ(rates.size(), 2u);
+  EXPECT_FALSE(rates[0].contains("failure"));
+  EXPECT_TRUE(rates[1].contains("failure"));
+  const auto& headline = written["headline"];
+  EXPECT_EQ(headline["max_shear_rate_per_s"], 0.0);
+  EXPECT_EQ(headline["length_um_at_max_rate"], rates[0]["length_um"]);
+  EXPECT_EQ(headline["failed_rate_count"], 1);
+  // One strain is too short for rate 0 to be steady: unsteady, but not failed.
+  EXPECT_EQ(rates[0]["steady"], false);
+  EXPECT_EQ(headline["unsteady_rate_count"], 1);
+}
+
 }  // namespace
