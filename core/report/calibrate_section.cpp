@@ -58,7 +58,7 @@ Table calibration_table(const RunDirectory& run, const std::string& label) {
 
 Section build_calibrate_section(const RunList& all_runs) {
   Section section{"calibrate", "Calibration (patch tests)", {}, nlohmann::json::array()};
-  const auto runs = succeeded_runs(all_runs, section);
+  const auto runs = plotted_runs(all_runs, section);
   const auto labels = distinct_labels(runs, morphology_and_terms);
   section.blocks.emplace_back(Paragraph{
       "Hexagonal patch: E_s, mu, K and the 2D Poisson ratio (K - mu)/(K + mu) from the link "

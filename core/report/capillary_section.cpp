@@ -155,7 +155,7 @@ std::vector<std::string> capillary_labels(const RunList& runs) {
 
 Section build_capillary_section(const RunList& all_runs) {
   Section section{"capillary", "Capillary transit", {}, {}};
-  const auto runs = succeeded_runs(all_runs, section);
+  const auto runs = plotted_runs(all_runs, section);
   const auto labels = capillary_labels(runs);
 
   svg::LinePlot deformation{"Deformation index vs time", "time (s)", "deformation index DI", {}};

@@ -75,8 +75,9 @@ RunDirectory read_run_directory(const std::filesystem::path& directory) {
   run.command = result.at("command").string();
   run.morphology = result.at("morphology").string();
   run.status = result.at("status").string();
-  if (run.status != "ok" && run.status != "failed") {
-    result.at("status").fail("expected \"ok\" or \"failed\", found \"" + run.status + "\"");
+  if (run.status != "ok" && run.status != "failed" && run.status != "interrupted") {
+    result.at("status").fail("expected \"ok\", \"failed\" or \"interrupted\", found \"" +
+                             run.status + "\"");
   }
   result.at("version").string();
   result.at("wall_time_s").number();

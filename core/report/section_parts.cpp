@@ -55,21 +55,22 @@ nlohmann::json run_summary(const RunDirectory& run) {
   return summary;
 }
 
-RunList succeeded_runs(const RunList& runs, Section& section) {
-  RunList succeeded;
-  std::string failed;
+RunList plotted_runs(const RunList& runs, Section& section,
+                     const std::function<bool(const RunDirectory&)>& plotted) {
+  RunList kept;
+  std::string left_out;
   for (const auto* run : runs) {
-    if (run->succeeded()) {
-      succeeded.push_back(run);
+    if (plotted(*run)) {
+      kept.push_back(run);
     } else {
-      failed += (failed.empty() ? "" : ", ") + run->directory.generic_string();
+      left_out += (left_out.empty() ? "" : ", ") + run->directory.generic_string();
     }
   }
-  if (!failed.empty()) {
-    section.blocks.emplace_back(
-        Paragraph{"Failed runs (listed under Runs, not plotted): " + failed + "."});
+  if (!left_out.empty()) {
+    section.blocks.emplace_back(Paragraph{
+        "Failed or interrupted runs (listed under Runs, not plotted): " + left_out + "."});
   }
-  return succeeded;
+  return kept;
 }
 
 Table headline_table(const RunList& runs, const std::vector<std::string>& labels) {

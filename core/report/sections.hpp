@@ -54,9 +54,12 @@ nlohmann::json run_identity(const RunDirectory& run);
 // in its section of summary.json.
 nlohmann::json run_summary(const RunDirectory& run);
 
-// The runs whose status is "ok". A failed run is listed in the runs section and, here, named in
-// a paragraph of `section`: its numbers are not results, so they are not plotted.
-RunList succeeded_runs(const RunList& runs, Section& section);
+// The runs `plotted` accepts: by default those whose status is "ok". Any other run (failed or
+// interrupted) is listed in the runs section and, here, named in a paragraph of `section`: its
+// numbers are not results, so they are not plotted.
+RunList plotted_runs(
+    const RunList& runs, Section& section,
+    const std::function<bool(const RunDirectory&)>& plotted = &RunDirectory::succeeded);
 
 // Each run's result.json "headline" object as a table row.
 Table headline_table(const RunList& runs, const std::vector<std::string>& labels);

@@ -12,14 +12,31 @@ namespace {
 
 constexpr std::string_view kRateKey = "shear_rate_per_s";
 
-// (shear rate, rates[i][y_key]) of every entry that has a number there. A missing `required`
-// key is bad input, naming the JSON path.
+// A rate that failed (or was interrupted) has a "failure": its shape is the one it broke in.
+bool rate_finished(const JsonField& rate) { return !rate.find("failure"); }
+
+// A sweep is plotted when it finished, or when it failed or was interrupted after some of its
+// rates finished: those rates are results (a cell that buckles at the highest rate is one of
+// the paper's findings, not a reason to drop the rates below it).
+bool has_finished_rates(const RunDirectory& run) {
+  if (run.succeeded()) return true;
+  const auto section = run.result.find(run.command);
+  if (section == run.result.end() || !section->contains("rates")) return false;
+  const auto& rates = section->at("rates");
+  return rates.is_array() && std::any_of(rates.begin(), rates.end(), [](const auto& rate) {
+           return rate.is_object() && !rate.contains("failure");
+         });
+}
+
+// (shear rate, rates[i][y_key]) of every finished rate that has a number there. A missing
+// `required` key is bad input, naming the JSON path.
 std::vector<svg::PlotPoint> sweep_points(const RunDirectory& run, std::string_view y_key,
                                          bool required) {
   const auto rates = run.section().at("rates");
   std::vector<svg::PlotPoint> points;
   for (std::size_t i = 0; i < rates.array_size(); ++i) {
     const auto rate = rates.at(i);
+    if (!rate_finished(rate)) continue;
     const double x = rate.at(kRateKey).number();
     if (required) {
       points.push_back({x, rate.at(y_key).number()});
@@ -119,11 +136,27 @@ Table sweep_table(const RunDirectory& run, const std::string& label) {
   return table_of_objects("Shear sweep: " + label, key_title(kRateKey), rows);
 }
 
+// "stomatocyte-II, without ...: 2000 1/s; ..." for the rates that did not finish; empty if none.
+std::string unfinished_rates(const RunList& runs, const std::vector<std::string>& labels) {
+  std::string listed;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto rates = runs[i]->section().at("rates");
+    std::string of_run;
+    for (std::size_t r = 0; r < rates.array_size(); ++r) {
+      if (rate_finished(rates.at(r))) continue;
+      of_run +=
+          (of_run.empty() ? "" : ", ") + format_cell(rates.at(r).at(kRateKey).json()) + " 1/s";
+    }
+    if (!of_run.empty()) listed += (listed.empty() ? "" : "; ") + labels[i] + ": " + of_run;
+  }
+  return listed;
+}
+
 }  // namespace
 
 Section build_shear_section(const RunList& all_runs) {
   Section section{"shear", "Simple shear", {}, nlohmann::json::array()};
-  const auto runs = succeeded_runs(all_runs, section);
+  const auto runs = plotted_runs(all_runs, section, has_finished_rates);
   const auto labels = distinct_labels(runs, morphology_and_terms);
 
   const SectionStyles styles{distinct(runs, &RunDirectory::terms),
@@ -139,6 +172,12 @@ Section build_shear_section(const RunList& all_runs) {
                                    plot.caption)) {
       section.blocks.emplace_back(std::move(*figure));
     }
+  }
+  if (const auto unfinished = unfinished_rates(runs, labels); !unfinished.empty()) {
+    section.blocks.emplace_back(Paragraph{
+        "Rates that failed or were interrupted are in the tables below with their failure, not "
+        "in the plots: " +
+        unfinished + "."});
   }
   for (std::size_t i = 0; i < runs.size(); ++i) {
     section.blocks.emplace_back(sweep_table(*runs[i], labels[i]));

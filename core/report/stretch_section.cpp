@@ -77,7 +77,7 @@ std::string run_description(const RunDirectory& run) {
 
 Section build_stretch_section(const RunList& all_runs) {
   Section section{"stretch", "Stretching (optical tweezers)", {}, nlohmann::json::array()};
-  const auto runs = succeeded_runs(all_runs, section);
+  const auto runs = plotted_runs(all_runs, section);
   const auto labels = distinct_labels(runs, run_description);
 
   svg::LinePlot plot{"Cell diameters vs stretching force", "force (pN)", "diameter (µm)", {}};

@@ -65,20 +65,69 @@ TEST(ReportInputs, HostileStringsAreEscapedEverywhere) {
   EXPECT_EQ(documents.summary.at("stretch")[0].at("terms"), terms);
 }
 
-TEST(ReportInputs, FailedRunsAreListedButNotPlotted) {
+TEST(ReportInputs, FailedAndInterruptedRunsAreListedButNotPlotted) {
   rbcsim::testing::ScratchDirectory scratch;
-  auto failed = rbcsim::testing::shear_run("discocyte", rbcsim::testing::all_terms(), 11);
+  auto failed = rbcsim::testing::capillary_run("discocyte", 1.4e-3, 2.2);
   failed.status = "failed";
-  const auto ok = rbcsim::testing::shear_run("echinocyte-III", rbcsim::testing::all_terms(), 10);
-  const auto documents = build_report(read_run_directories(
-      {write_run(scratch.path() / "failed", failed), write_run(scratch.path() / "ok", ok)}));
-  EXPECT_EQ(documents.summary.at("runs").size(), 2u);
-  ASSERT_EQ(documents.summary.at("shear").size(), 1u);
-  EXPECT_EQ(documents.summary.at("shear")[0].at("morphology"), "echinocyte-III");
-  EXPECT_NE(documents.html.find("Failed runs (listed under Runs, not plotted): " +
-                                (scratch.path() / "failed").generic_string()),
+  auto interrupted = rbcsim::testing::capillary_run("stomatocyte-II", 1.5e-3, 2.0);
+  interrupted.status = "interrupted";
+  const auto ok = rbcsim::testing::capillary_run("echinocyte-III", 1.6e-3, 2.1);
+  const auto documents =
+      build_report(read_run_directories({write_run(scratch.path() / "failed", failed),
+                                         write_run(scratch.path() / "interrupted", interrupted),
+                                         write_run(scratch.path() / "ok", ok)}));
+  EXPECT_EQ(documents.summary.at("runs").size(), 3u);
+  ASSERT_EQ(documents.summary.at("capillary").at("runs").size(), 1u);
+  EXPECT_EQ(documents.summary.at("capillary").at("runs")[0].at("morphology"), "echinocyte-III");
+  EXPECT_NE(documents.html.find("Failed or interrupted runs (listed under Runs, not plotted): " +
+                                (scratch.path() / "failed").generic_string() + ", " +
+                                (scratch.path() / "interrupted").generic_string() + "."),
             std::string::npos);
-  EXPECT_EQ(documents.html.find("Cell length vs shear rate: discocyte"), std::string::npos);
+  const auto page = parse_xml(documents.html);
+  for (const auto i : page.find("g", "series")) {
+    EXPECT_EQ(page.elements[i].attribute("data-label").find("discocyte"), std::string::npos);
+  }
+}
+
+// A sweep that failed at its highest rate keeps the rates below it: they finished, and the
+// failure is the finding (the paper's "unnatural deformations" without F_ad and F_tc).
+TEST(ReportInputs, ShearSweepThatFailedAtARatePlotsTheRatesThatFinished) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto partial = rbcsim::testing::shear_run("stomatocyte-II", rbcsim::testing::four_terms(), 11);
+  partial.status = "failed";
+  partial.section["rates"][4]["failure"] = "step 9755: edge 867 beyond its limit";
+  partial.section["rates"][4]["steady"] = false;
+  auto nothing_finished =
+      rbcsim::testing::shear_run("echinocyte-III", rbcsim::testing::all_terms(), 10);
+  nothing_finished.status = "interrupted";
+  for (auto& rate : nothing_finished.section["rates"]) rate["failure"] = "interrupted";
+  const auto documents =
+      build_report(read_run_directories({write_run(scratch.path() / "partial", partial),
+                                         write_run(scratch.path() / "nothing", nothing_finished)}));
+  const auto page = parse_xml(documents.html);
+  ASSERT_EQ(page.error, "");
+
+  ASSERT_EQ(documents.summary.at("shear").size(), 1u);
+  EXPECT_EQ(documents.summary.at("shear")[0].at("morphology"), "stomatocyte-II");
+  EXPECT_NE(documents.html.find("not plotted): " + (scratch.path() / "nothing").generic_string()),
+            std::string::npos);
+  EXPECT_NE(documents.html.find("not in the plots: stomatocyte-II, without area_difference and "
+                                "total_curvature: 2000 1/s."),
+            std::string::npos)
+      << documents.markdown;
+  // Four of the five rates in the length plot; all five, with the failure, in the sweep's table.
+  long plot = -1;
+  for (const auto i : page.find("title")) {
+    if (page.elements[i].text == "Cell length vs shear rate: stomatocyte-II") {
+      plot = page.elements[i].parent;
+    }
+  }
+  ASSERT_GE(plot, 0);
+  const auto series = page.find("g", "series", plot);
+  ASSERT_EQ(series.size(), 1u);
+  EXPECT_EQ(page.find("", "marker", static_cast<long>(series[0])).size(), 4u);
+  EXPECT_NE(documents.markdown.find("| 2000 |"), std::string::npos);
+  EXPECT_NE(documents.markdown.find("step 9755: edge 867 beyond its limit"), std::string::npos);
 }
 
 TEST(ReportInputs, OtherCommandsGetTheirHeadlineNumbers) {
@@ -214,7 +263,7 @@ TEST(ReportInputs, ContractViolationsNameTheJsonPath) {
 
   EXPECT_EQ(report_error({status_run}),
             (status_run / "result.json").string() +
-                ": /status: expected \"ok\" or \"failed\", found \"done\"");
+                ": /status: expected \"ok\", \"failed\" or \"interrupted\", found \"done\"");
 }
 
 TEST(ReportInputs, ConfigWithoutMembraneForcesIsNamed) {
