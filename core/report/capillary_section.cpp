@@ -1,6 +1,8 @@
 // One cell through a stenosed capillary (DESIGN.md §4 capillary): deformation index against
 // time for every morphology (paper Fig. 13), transit times as bars, whether their order is the
-// paper's, and whether F_ad and F_tc lower the peak DI as in the paper's Fig. 13.
+// paper's, and whether F_ad and F_tc lower the peak DI as in the paper's Fig. 13. A run that
+// failed or was interrupted is drawn in the DI plot up to where it stopped (where and how a cell
+// fails is what a user wants to see), and left out of everything that needs a transit.
 #include <algorithm>
 #include <array>
 
@@ -31,6 +33,14 @@ std::vector<svg::PlotPoint> deformation_over_time(const RunDirectory& run) {
 
 double transit_time_s(const RunDirectory& run) {
   return run.section().at("transit_time_s").number();
+}
+
+// A failed or interrupted run with a capillary object and its time series: drawn up to its stop.
+bool has_deformation_trace(const RunDirectory& run) {
+  if (run.succeeded()) return true;
+  const auto section = run.result.find(run.command);
+  return section != run.result.end() && section->contains("geometry") &&
+         std::filesystem::exists(run.directory / kTimeSeriesFile);
 }
 
 // The tube the run went through: a built-in geometry's name or the wall file's.
@@ -151,22 +161,58 @@ std::vector<std::string> capillary_labels(const RunList& runs) {
   });
 }
 
+// The runs that finished, with their labels and plot colours; a run's colour is its place among
+// all the traced runs, so it keeps it in both plots.
+struct FinishedRuns {
+  RunList runs;
+  std::vector<std::string> labels;
+  std::vector<std::string> colours;
+};
+
+// Every traced run's DI against time into `plot`: a run that stopped dashed, its status in its
+// label, and named in a paragraph of `section`. Returns the runs that finished.
+FinishedRuns draw_deformation(const RunList& traced, svg::LinePlot& plot, Section& section) {
+  const auto labels = capillary_labels(traced);
+  FinishedRuns finished;
+  std::string stopped;
+  for (std::size_t i = 0; i < traced.size(); ++i) {
+    const auto& run = *traced[i];
+    const auto colour = svg::palette_colour(i);
+    const auto label = run.succeeded() ? labels[i] : labels[i] + " (" + run.status + ")";
+    plot.series.push_back(
+        {label, deformation_over_time(run), colour, svg::Marker::none, true, !run.succeeded()});
+    if (run.succeeded()) {
+      finished.runs.push_back(&run);
+      finished.labels.push_back(labels[i]);
+      finished.colours.push_back(colour);
+    } else {
+      stopped += (stopped.empty() ? "" : ", ") + run.directory.generic_string();
+    }
+  }
+  if (!stopped.empty()) {
+    section.blocks.emplace_back(
+        Paragraph{"Drawn dashed in the DI plot up to where they stopped, and left out of the "
+                  "transit times and tables (no transit): " +
+                  stopped + "."});
+  }
+  return finished;
+}
+
 }  // namespace
 
 Section build_capillary_section(const RunList& all_runs) {
   Section section{"capillary", "Capillary transit", {}, {}};
-  const auto runs = plotted_runs(all_runs, section);
-  const auto labels = capillary_labels(runs);
-
+  const auto traced = plotted_runs(all_runs, section, has_deformation_trace);
   svg::LinePlot deformation{"Deformation index vs time", "time (s)", "deformation index DI", {}};
+  const auto finished = draw_deformation(traced, deformation, section);
+  const auto& runs = finished.runs;
+  const auto& labels = finished.labels;
+
   svg::BarChart transit{"Transit time through the narrow section", "transit time (s)", {}};
   std::vector<LabelledObject> rows;
   auto run_summaries = nlohmann::json::array();
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    const auto colour = svg::palette_colour(i);
-    deformation.series.push_back(
-        {labels[i], deformation_over_time(*runs[i]), colour, svg::Marker::none});
-    transit.bars.push_back({labels[i], transit_time_s(*runs[i]), colour});
+    transit.bars.push_back({labels[i], transit_time_s(*runs[i]), finished.colours[i]});
     const auto capillary = runs[i]->section();
     rows.push_back({labels[i], capillary.object()});
     run_summaries.push_back(run_summary(*runs[i]));
@@ -175,8 +221,10 @@ Section build_capillary_section(const RunList& all_runs) {
       Figure{svg::render_line_plot(deformation),
              "DI = (length in x) / (length in y) of the cell (paper Eq. 19) from " +
                  std::string(kTimeSeriesFile) + "; it peaks in the throat (paper Fig. 13)."});
-  section.blocks.emplace_back(
-      Figure{svg::render_bar_chart(transit), "Time to cross the narrow section of the capillary."});
+  if (!runs.empty()) {
+    section.blocks.emplace_back(Figure{svg::render_bar_chart(transit),
+                                       "Time to cross the narrow section of the capillary."});
+  }
   const auto orders = transit_orders(runs, section);
   const auto peaks = peak_deformation_by_terms(runs, section);
   section.blocks.emplace_back(table_of_objects("Capillary results", "run", rows));

@@ -67,18 +67,19 @@ TEST(ReportInputs, HostileStringsAreEscapedEverywhere) {
 
 TEST(ReportInputs, FailedAndInterruptedRunsAreListedButNotPlotted) {
   rbcsim::testing::ScratchDirectory scratch;
-  auto failed = rbcsim::testing::capillary_run("discocyte", 1.4e-3, 2.2);
+  auto failed = rbcsim::testing::stretch_run(rbcsim::testing::all_terms(), 90, 0.3);
   failed.status = "failed";
-  auto interrupted = rbcsim::testing::capillary_run("stomatocyte-II", 1.5e-3, 2.0);
+  auto interrupted = rbcsim::testing::stretch_run(rbcsim::testing::four_terms(), 90, 0.3);
   interrupted.status = "interrupted";
-  const auto ok = rbcsim::testing::capillary_run("echinocyte-III", 1.6e-3, 2.1);
+  auto ok = rbcsim::testing::stretch_run(rbcsim::testing::all_terms(), 80, 0.2);
+  ok.morphology = "echinocyte-III";
   const auto documents =
       build_report(read_run_directories({write_run(scratch.path() / "failed", failed),
                                          write_run(scratch.path() / "interrupted", interrupted),
                                          write_run(scratch.path() / "ok", ok)}));
   EXPECT_EQ(documents.summary.at("runs").size(), 3u);
-  ASSERT_EQ(documents.summary.at("capillary").at("runs").size(), 1u);
-  EXPECT_EQ(documents.summary.at("capillary").at("runs")[0].at("morphology"), "echinocyte-III");
+  ASSERT_EQ(documents.summary.at("stretch").size(), 1u);
+  EXPECT_EQ(documents.summary.at("stretch")[0].at("morphology"), "echinocyte-III");
   EXPECT_NE(documents.html.find("Failed or interrupted runs (listed under Runs, not plotted): " +
                                 (scratch.path() / "failed").generic_string() + ", " +
                                 (scratch.path() / "interrupted").generic_string() + "."),
@@ -87,6 +88,48 @@ TEST(ReportInputs, FailedAndInterruptedRunsAreListedButNotPlotted) {
   for (const auto i : page.find("g", "series")) {
     EXPECT_EQ(page.elements[i].attribute("data-label").find("discocyte"), std::string::npos);
   }
+}
+
+// A capillary run that stopped is drawn up to where it stopped (where a cell fails is worth
+// seeing), dashed and marked, but it has no transit: no bar, no row, no summary entry. One that
+// stopped before writing its time series is only listed.
+TEST(ReportInputs, CapillaryRunThatStoppedIsDrawnUpToItsStopWithoutATransit) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto failed = rbcsim::testing::capillary_run("discocyte", 1.4e-3, 2.2);
+  failed.status = "failed";
+  auto no_series = rbcsim::testing::capillary_run("stomatocyte-II", 1.5e-3, 2.0);
+  no_series.status = "interrupted";
+  no_series.time_series_csv.clear();
+  const auto ok = rbcsim::testing::capillary_run("echinocyte-III", 1.6e-3, 2.1);
+  const auto documents = build_report(read_run_directories(
+      {write_run(scratch.path() / "failed", failed),
+       write_run(scratch.path() / "no-series", no_series), write_run(scratch.path() / "ok", ok)}));
+  const auto page = parse_xml(documents.html);
+  ASSERT_EQ(page.error, "");
+
+  ASSERT_EQ(documents.summary.at("capillary").at("runs").size(), 1u);
+  EXPECT_EQ(documents.summary.at("capillary").at("runs")[0].at("morphology"), "echinocyte-III");
+  EXPECT_NE(documents.html.find("not plotted): " + (scratch.path() / "no-series").generic_string()),
+            std::string::npos);
+  EXPECT_NE(documents.html.find("up to where they stopped, and left out of the transit times and "
+                                "tables (no transit): " +
+                                (scratch.path() / "failed").generic_string() + "."),
+            std::string::npos);
+  std::vector<std::string> series;
+  std::vector<std::string> dashes;
+  for (const auto i : page.find("g", "series")) {
+    series.push_back(page.elements[i].attribute("data-label"));
+    const auto lines = page.find("polyline", "", static_cast<long>(i));
+    ASSERT_EQ(lines.size(), 1u);
+    dashes.push_back(page.elements[lines[0]].attribute("stroke-dasharray"));
+  }
+  EXPECT_EQ(series,
+            (std::vector<std::string>{"discocyte, all six (failed)", "echinocyte-III, all six"}));
+  EXPECT_EQ(dashes, (std::vector<std::string>{"6 4", ""}));
+  std::vector<std::string> bars;
+  for (const auto i : page.find("g", "bar"))
+    bars.push_back(page.elements[i].attribute("data-label"));
+  EXPECT_EQ(bars, std::vector<std::string>{"echinocyte-III, all six"});
 }
 
 // A sweep that failed at its highest rate keeps the rates below it: they finished, and the
