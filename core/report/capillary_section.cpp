@@ -5,6 +5,7 @@
 // fails is what a user wants to see), and left out of everything that needs a transit.
 #include <algorithm>
 #include <array>
+#include <map>
 
 #include "membrane/parameters.hpp"
 #include "report/markup.hpp"
@@ -161,58 +162,36 @@ std::vector<std::string> capillary_labels(const RunList& runs) {
   });
 }
 
-// The runs that finished, with their labels and plot colours; a run's colour is its place among
-// all the traced runs, so it keeps it in both plots.
-struct FinishedRuns {
-  RunList runs;
-  std::vector<std::string> labels;
-  std::vector<std::string> colours;
-};
-
-// Every traced run's DI against time into `plot`: a run that stopped dashed, its status in its
-// label, and named in a paragraph of `section`. Returns the runs that finished.
-FinishedRuns draw_deformation(const RunList& traced, svg::LinePlot& plot, Section& section) {
-  const auto labels = capillary_labels(traced);
-  FinishedRuns finished;
-  std::string stopped;
-  for (std::size_t i = 0; i < traced.size(); ++i) {
-    const auto& run = *traced[i];
-    const auto colour = svg::palette_colour(i);
-    const auto label = run.succeeded() ? labels[i] : labels[i] + " (" + run.status + ")";
-    plot.series.push_back(
-        {label, deformation_over_time(run), colour, svg::Marker::none, true, !run.succeeded()});
-    if (run.succeeded()) {
-      finished.runs.push_back(&run);
-      finished.labels.push_back(labels[i]);
-      finished.colours.push_back(colour);
-    } else {
-      stopped += (stopped.empty() ? "" : ", ") + run.directory.generic_string();
-    }
-  }
-  if (!stopped.empty()) {
-    section.blocks.emplace_back(
-        Paragraph{"Drawn dashed in the DI plot up to where they stopped, and left out of the "
-                  "transit times and tables (no transit): " +
-                  stopped + "."});
-  }
-  return finished;
-}
-
 }  // namespace
 
 Section build_capillary_section(const RunList& all_runs) {
   Section section{"capillary", "Capillary transit", {}, {}};
   const auto traced = plotted_runs(all_runs, section, has_deformation_trace);
+  name_unfinished_runs(traced,
+                       "Drawn dashed in the DI plot up to where they stopped, and left out of the "
+                       "transit times and tables (no transit)",
+                       section);
+  const auto traced_labels = capillary_labels(traced);
   svg::LinePlot deformation{"Deformation index vs time", "time (s)", "deformation index DI", {}};
-  const auto finished = draw_deformation(traced, deformation, section);
-  const auto& runs = finished.runs;
-  const auto& labels = finished.labels;
+  // A run keeps its label and its colour (its place among the traced runs) in every plot.
+  std::map<const RunDirectory*, std::pair<std::string, std::string>> label_and_colour;
+  for (std::size_t i = 0; i < traced.size(); ++i) {
+    const auto& run = *traced[i];
+    label_and_colour[&run] = {traced_labels[i], svg::palette_colour(i)};
+    deformation.series.push_back({label_with_status(run, traced_labels[i]),
+                                  deformation_over_time(run), svg::palette_colour(i),
+                                  svg::Marker::none, true, !run.succeeded()});
+  }
 
+  const auto runs = finished_runs(traced);
+  std::vector<std::string> labels;
   svg::BarChart transit{"Transit time through the narrow section", "transit time (s)", {}};
   std::vector<LabelledObject> rows;
   auto run_summaries = nlohmann::json::array();
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    transit.bars.push_back({labels[i], transit_time_s(*runs[i]), finished.colours[i]});
+    const auto& [label, colour] = label_and_colour.at(runs[i]);
+    labels.push_back(label);
+    transit.bars.push_back({label, transit_time_s(*runs[i]), colour});
     const auto capillary = runs[i]->section();
     rows.push_back({labels[i], capillary.object()});
     run_summaries.push_back(run_summary(*runs[i]));

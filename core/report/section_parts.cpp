@@ -73,6 +73,40 @@ RunList plotted_runs(const RunList& runs, Section& section,
   return kept;
 }
 
+std::string label_with_status(const RunDirectory& run, const std::string& label) {
+  return run.succeeded() ? label : label + " (" + run.status + ")";
+}
+
+bool has_result_entries(const RunDirectory& run, const std::string& member,
+                        const std::function<bool(const nlohmann::json&)>& is_result) {
+  if (run.succeeded()) return true;
+  const auto section = run.result.find(run.command);
+  if (section == run.result.end() || !section->is_object() || !section->contains(member)) {
+    return false;
+  }
+  const auto& entries = section->at(member);
+  return entries.is_array() && std::any_of(entries.begin(), entries.end(), [&](const auto& entry) {
+           return entry.is_object() && is_result(entry);
+         });
+}
+
+void name_unfinished_runs(const RunList& runs, const std::string& how_drawn, Section& section) {
+  std::string unfinished;
+  for (const auto* run : runs) {
+    if (run->succeeded()) continue;
+    unfinished += (unfinished.empty() ? "" : ", ") + run->directory.generic_string();
+  }
+  if (!unfinished.empty())
+    section.blocks.emplace_back(Paragraph{how_drawn + ": " + unfinished + "."});
+}
+
+RunList finished_runs(const RunList& runs) {
+  RunList finished;
+  std::copy_if(runs.begin(), runs.end(), std::back_inserter(finished),
+               [](const RunDirectory* run) { return run->succeeded(); });
+  return finished;
+}
+
 Table headline_table(const RunList& runs, const std::vector<std::string>& labels) {
   std::vector<LabelledObject> rows;
   for (std::size_t i = 0; i < runs.size(); ++i) {

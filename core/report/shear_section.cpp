@@ -19,13 +19,8 @@ bool rate_finished(const JsonField& rate) { return !rate.find("failure"); }
 // rates finished: those rates are results (a cell that buckles at the highest rate is one of
 // the paper's findings, not a reason to drop the rates below it).
 bool has_finished_rates(const RunDirectory& run) {
-  if (run.succeeded()) return true;
-  const auto section = run.result.find(run.command);
-  if (section == run.result.end() || !section->contains("rates")) return false;
-  const auto& rates = section->at("rates");
-  return rates.is_array() && std::any_of(rates.begin(), rates.end(), [](const auto& rate) {
-           return rate.is_object() && !rate.contains("failure");
-         });
+  return has_result_entries(run, "rates",
+                            [](const nlohmann::json& rate) { return !rate.contains("failure"); });
 }
 
 // (shear rate, rates[i][y_key]) of every finished rate that has a number there. A missing

@@ -1,5 +1,8 @@
 // Optical-tweezers stretching (DESIGN.md §4 stretch): axial and transverse diameters against
-// force for every run, over the Mills et al. (2004) measurements with their error bars.
+// force for every run, over the Mills et al. (2004) measurements with their error bars. A curve
+// that stopped (a fluid stretch failing at its ninth force, say) is drawn up to its last force
+// that reached its steady shape, and left out of the comparison: it is not the whole curve.
+#include <algorithm>
 #include <optional>
 
 #include "common/errors.hpp"
@@ -17,11 +20,26 @@ struct Diameters {
   std::vector<svg::PlotPoint> transverse;
 };
 
+// A point a run did not bring to its steady shape has "converged": false (a finished run has
+// none; a stopped one ends with the force it failed at).
+bool converged(const JsonField& point) {
+  const auto flag = point.find("converged");
+  return !flag || flag->boolean();
+}
+
+// A stopped run with at least one converged point: drawn up to it.
+bool has_converged_points(const RunDirectory& run) {
+  return has_result_entries(run, "points", [](const nlohmann::json& point) {
+    return point.contains("converged") && point.at("converged") == true;
+  });
+}
+
 Diameters run_diameters(const RunDirectory& run) {
   const auto points = run.section().at("points");
   Diameters diameters;
   for (std::size_t i = 0; i < points.array_size(); ++i) {
     const auto point = points.at(i);
+    if (!converged(point)) continue;
     const double force_pN = point.at("force_pN").number();
     diameters.axial.push_back({force_pN, point.at("axial_um").number()});
     diameters.transverse.push_back({force_pN, point.at("transverse_um").number()});
@@ -77,22 +95,31 @@ std::string run_description(const RunDirectory& run) {
 
 Section build_stretch_section(const RunList& all_runs) {
   Section section{"stretch", "Stretching (optical tweezers)", {}, nlohmann::json::array()};
-  const auto runs = plotted_runs(all_runs, section);
-  const auto labels = distinct_labels(runs, run_description);
+  const auto drawn = plotted_runs(all_runs, section, has_converged_points);
+  name_unfinished_runs(drawn,
+                       "Drawn up to the last force that reached its steady shape, and left out of "
+                       "the comparison and headline tables (not the whole curve)",
+                       section);
+  const auto drawn_labels = distinct_labels(drawn, run_description);
 
   svg::LinePlot plot{"Cell diameters vs stretching force", "force (pN)", "diameter (µm)", {}};
   std::vector<LabelledObject> comparisons;
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    const auto diameters = run_diameters(*runs[i]);
+  RunList runs;  // the finished ones
+  std::vector<std::string> labels;
+  for (std::size_t i = 0; i < drawn.size(); ++i) {
+    const auto diameters = run_diameters(*drawn[i]);
     const auto colour = svg::palette_colour(i);
-    plot.series.push_back({labels[i] + ", axial", diameters.axial, colour, svg::Marker::circle});
-    plot.series.push_back({labels[i] + ", transverse", diameters.transverse, colour,
-                           svg::Marker::square, true, true});
-    const auto stretch = runs[i]->section();
-    if (const auto comparison = stretch.find("comparison")) {
-      comparisons.push_back({labels[i], comparison->object()});
+    const auto label = label_with_status(*drawn[i], drawn_labels[i]);
+    plot.series.push_back({label + ", axial", diameters.axial, colour, svg::Marker::circle});
+    plot.series.push_back(
+        {label + ", transverse", diameters.transverse, colour, svg::Marker::square, true, true});
+    if (!drawn[i]->succeeded()) continue;
+    runs.push_back(drawn[i]);
+    labels.push_back(drawn_labels[i]);
+    if (const auto comparison = drawn[i]->section().find("comparison")) {
+      comparisons.push_back({labels.back(), comparison->object()});
     }
-    section.summary.push_back(run_summary(*runs[i]));
+    section.summary.push_back(run_summary(*drawn[i]));
   }
   // The measurements last, so they are drawn over the runs' lines.
   for (auto& series : mills_series()) plot.series.push_back(std::move(series));

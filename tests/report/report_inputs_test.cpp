@@ -67,10 +67,14 @@ TEST(ReportInputs, HostileStringsAreEscapedEverywhere) {
 
 TEST(ReportInputs, FailedAndInterruptedRunsAreListedButNotPlotted) {
   rbcsim::testing::ScratchDirectory scratch;
+  // Both stopped before their first force reached its steady shape: nothing to draw.
   auto failed = rbcsim::testing::stretch_run(rbcsim::testing::all_terms(), 90, 0.3);
   failed.status = "failed";
+  failed.section["points"] = {failed.section["points"][0]};
+  failed.section["points"][0]["converged"] = false;
   auto interrupted = rbcsim::testing::stretch_run(rbcsim::testing::four_terms(), 90, 0.3);
   interrupted.status = "interrupted";
+  interrupted.section["points"] = nlohmann::json::array();
   auto ok = rbcsim::testing::stretch_run(rbcsim::testing::all_terms(), 80, 0.2);
   ok.morphology = "echinocyte-III";
   const auto documents =
@@ -130,6 +134,44 @@ TEST(ReportInputs, CapillaryRunThatStoppedIsDrawnUpToItsStopWithoutATransit) {
   for (const auto i : page.find("g", "bar"))
     bars.push_back(page.elements[i].attribute("data-label"));
   EXPECT_EQ(bars, std::vector<std::string>{"echinocyte-III, all six"});
+}
+
+// A stretch that failed at its ninth force (the paper's pairing in fluid) is drawn up to its
+// eighth, marked, and left out of the comparison with Mills: it is not the whole curve.
+TEST(ReportInputs, StretchThatFailedIsDrawnUpToItsLastSteadyForce) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto failed = rbcsim::testing::stretch_run(rbcsim::testing::all_terms(), 90, 0.3);
+  failed.status = "failed";
+  auto& points = failed.section["points"];
+  points.erase(points.begin() + 9, points.end());  // 0 .. 109 pN
+  points[8]["converged"] = false;                  // failed at 109 pN
+  auto ok = rbcsim::testing::stretch_run(rbcsim::testing::four_terms(), 80, 0.2);
+  const auto documents = build_report(read_run_directories(
+      {write_run(scratch.path() / "failed", failed), write_run(scratch.path() / "ok", ok)}));
+  const auto page = parse_xml(documents.html);
+  ASSERT_EQ(page.error, "");
+
+  std::vector<std::string> series;
+  std::vector<std::size_t> marker_counts;
+  for (const auto i : page.find("g", "series")) {
+    series.push_back(page.elements[i].attribute("data-label"));
+    marker_counts.push_back(page.find("", "marker", static_cast<long>(i)).size());
+  }
+  ASSERT_EQ(series.size(), 6u);  // two runs and Mills, axial and transverse each
+  EXPECT_EQ(series[0], "discocyte, all six, quasi-static (failed), axial");
+  EXPECT_EQ(marker_counts[0], 8u);
+  EXPECT_EQ(marker_counts[1], 8u);
+  EXPECT_EQ(series[2],
+            "discocyte, without area_difference and total_curvature, quasi-static, axial");
+  EXPECT_EQ(marker_counts[2], 13u);
+  ASSERT_EQ(documents.summary.at("stretch").size(), 1u);
+  EXPECT_EQ(documents.summary.at("stretch")[0].at("terms"),
+            "without area_difference and total_curvature");
+  EXPECT_NE(documents.html.find("left out of the comparison and headline tables (not the whole "
+                                "curve): " +
+                                (scratch.path() / "failed").generic_string() + "."),
+            std::string::npos);
+  EXPECT_EQ(documents.markdown.find("quasi-static (failed) |"), std::string::npos);
 }
 
 // A sweep that failed at its highest rate keeps the rates below it: they finished, and the
