@@ -5,7 +5,6 @@
 // fails is what a user wants to see), and left out of everything that needs a transit.
 #include <algorithm>
 #include <array>
-#include <map>
 
 #include "membrane/parameters.hpp"
 #include "report/markup.hpp"
@@ -173,25 +172,25 @@ Section build_capillary_section(const RunList& all_runs) {
                        section);
   const auto traced_labels = capillary_labels(traced);
   svg::LinePlot deformation{"Deformation index vs time", "time (s)", "deformation index DI", {}};
-  // A run keeps its label and its colour (its place among the traced runs) in every plot.
-  std::map<const RunDirectory*, std::pair<std::string, std::string>> label_and_colour;
+  RunList runs;  // those that finished; a run keeps its label and colour in both plots
+  std::vector<std::string> labels;
+  std::vector<std::string> colours;
   for (std::size_t i = 0; i < traced.size(); ++i) {
     const auto& run = *traced[i];
-    label_and_colour[&run] = {traced_labels[i], svg::palette_colour(i)};
     deformation.series.push_back({label_with_status(run, traced_labels[i]),
                                   deformation_over_time(run), svg::palette_colour(i),
                                   svg::Marker::none, true, !run.succeeded()});
+    if (!run.succeeded()) continue;
+    runs.push_back(&run);
+    labels.push_back(traced_labels[i]);
+    colours.push_back(svg::palette_colour(i));
   }
 
-  const auto runs = finished_runs(traced);
-  std::vector<std::string> labels;
   svg::BarChart transit{"Transit time through the narrow section", "transit time (s)", {}};
   std::vector<LabelledObject> rows;
   auto run_summaries = nlohmann::json::array();
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    const auto& [label, colour] = label_and_colour.at(runs[i]);
-    labels.push_back(label);
-    transit.bars.push_back({label, transit_time_s(*runs[i]), colour});
+    transit.bars.push_back({labels[i], transit_time_s(*runs[i]), colours[i]});
     const auto capillary = runs[i]->section();
     rows.push_back({labels[i], capillary.object()});
     run_summaries.push_back(run_summary(*runs[i]));

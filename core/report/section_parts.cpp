@@ -100,13 +100,6 @@ void name_unfinished_runs(const RunList& runs, const std::string& how_drawn, Sec
     section.blocks.emplace_back(Paragraph{how_drawn + ": " + unfinished + "."});
 }
 
-RunList finished_runs(const RunList& runs) {
-  RunList finished;
-  std::copy_if(runs.begin(), runs.end(), std::back_inserter(finished),
-               [](const RunDirectory* run) { return run->succeeded(); });
-  return finished;
-}
-
 Table headline_table(const RunList& runs, const std::vector<std::string>& labels) {
   std::vector<LabelledObject> rows;
   for (std::size_t i = 0; i < runs.size(); ++i) {

@@ -63,8 +63,7 @@ RunList plotted_runs(
 
 // A run that stopped (failed or interrupted) but whose partial record is worth drawing: its plot
 // label carries its status ("discocyte, all six (failed)"), it is named in a paragraph of
-// `section` saying how the plots show it, and it is left out of everything else, which
-// `finished_runs` selects.
+// `section` saying how the plots show it, and it is left out of everything else.
 std::string label_with_status(const RunDirectory& run, const std::string& label);
 // Whether a run is worth drawing: it finished, or an entry of the `member` array of its command's
 // object (a shear rate, a stretch force) is a result by `is_result`. Read leniently: a stopped
@@ -72,7 +71,6 @@ std::string label_with_status(const RunDirectory& run, const std::string& label)
 bool has_result_entries(const RunDirectory& run, const std::string& member,
                         const std::function<bool(const nlohmann::json&)>& is_result);
 void name_unfinished_runs(const RunList& runs, const std::string& how_drawn, Section& section);
-RunList finished_runs(const RunList& runs);
 
 // Each run's result.json "headline" object as a table row.
 Table headline_table(const RunList& runs, const std::vector<std::string>& labels);
