@@ -34,8 +34,9 @@ summary { cursor: pointer; }
   @page { size: landscape; }
   body { max-width: none; padding: 0; }
   .table-wrap { overflow-x: visible; }
-  table { font-size: 0.62rem; }
-  td.prose { min-width: 12em; }
+  table { font-size: 0.56rem; }
+  th, td { padding: 0.1rem 0.2rem; }
+  td.prose { min-width: 10em; }
 }
 )";
 
