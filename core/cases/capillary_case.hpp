@@ -46,7 +46,7 @@ struct CapillarySettings {
   double wall_repulsion_pN_per_um2 = 20.0;
   double wall_repulsion_range_um = 0.5;
   double pass_margin_um = 4.0;
-  double max_time_s = 0.05;
+  double max_time_s = 0.05;  // > 0; the config's 0 (the default) is resolved in setup/
   double sample_interval_s = 1e-5;
   // The fluid alone is steady when max |u(t) - u(t - check)| <= tolerance * max |u| over
   // `fluid_check_interval_steps`, within fluid_max_steps (else the run fails).

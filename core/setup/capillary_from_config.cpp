@@ -44,6 +44,19 @@ CapillaryWall capillary_wall_from(const config::Config& config) {
           "capillary.geometry"};
 }
 
+namespace {
+
+// The time the mean inlet flow takes to cross the fluid box along x. A cell on the axis moves
+// faster than the mean: passing cells need about a third of it at every velocity we ran (README.md,
+// capillary), so as a time limit it stops a stuck cell without cutting a slow run short.
+double mean_flow_crossing_time_s(const CapillaryWall& wall, double mean_inlet_velocity_m_per_s) {
+  const auto bounds = wall.shape->fluid_bounds();
+  return (bounds.max_um.x() - bounds.min_um.x()) * kMetresPerMicrometre /
+         mean_inlet_velocity_m_per_s;
+}
+
+}  // namespace
+
 cases::CapillarySettings capillary_settings_from(const config::Config& config,
                                                  const CapillaryWall& wall) {
   cases::CapillarySettings settings;
@@ -66,6 +79,9 @@ cases::CapillarySettings capillary_settings_from(const config::Config& config,
   settings.wall_repulsion_pN_per_um2 = config.number("capillary.wall_repulsion_pN_per_um2");
   settings.wall_repulsion_range_um = config.number("capillary.wall_repulsion_range_um");
   settings.max_time_s = config.number("capillary.max_time_s");
+  if (settings.max_time_s == 0.0) {
+    settings.max_time_s = mean_flow_crossing_time_s(wall, settings.mean_inlet_velocity_m_per_s);
+  }
   settings.sample_interval_s = config.number("capillary.sample_interval_s");
   settings.fluid_tolerance = config.number("capillary.fluid_tolerance");
   settings.fluid_max_steps = static_cast<std::size_t>(config.integer("capillary.fluid_max_steps"));

@@ -113,6 +113,22 @@ TEST(CapillaryCase, AStifferLocalAreaTermCarriesTheCellThroughThePaperThroat) {
   EXPECT_LT(run.final_deformation_index, run.peak_deformation_index - 0.3);
 }
 
+// With no time limit given (capillary.max_time_s 0) a run may take as long as the mean inlet flow
+// needs to cross the tube, so slow flows are not cut short: 31.2 um at 1e-4 m/s is 0.312 s. A
+// limit that is given stays.
+TEST(CapillaryCase, TheDefaultTimeLimitIsTheTimeTheMeanFlowTakesToCrossTheTube) {
+  const auto settings_for = [](std::vector<std::string> assignments) {
+    const auto config = config::resolve_config({.assignments = std::move(assignments)});
+    return setup::capillary_settings_from(config, setup::capillary_wall_from(config));
+  };
+  constexpr double kValidationTubeLength_m = 31.2e-6;
+  EXPECT_NEAR(settings_for({"capillary.inlet_velocity_m_per_s=1e-4"}).max_time_s,
+              kValidationTubeLength_m / 1e-4, 1e-12);
+  EXPECT_EQ(settings_for({"capillary.inlet_velocity_m_per_s=1e-4", "capillary.max_time_s=0.05"})
+                .max_time_s,
+            0.05);
+}
+
 // A discocyte 11 um across does not fit the 10.2 um inlet: bad input before any step, and
 // before the fluid is settled (the test takes milliseconds).
 TEST(CapillaryCase, ACellWiderThanTheInletIsBadInput) {

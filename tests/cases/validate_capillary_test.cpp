@@ -79,8 +79,8 @@ TEST(ValidateCapillary, PapersPairingPassesTheValidationCapillaryAtTheNaturalVel
 TEST(ValidateCapillary, DiscocyteReachesThePapersPeakDIAtTheLowNaturalVelocity) {
   const auto run = run_with(
       "discocyte", {"capillary.geometry=paper-validation", "capillary.inlet_velocity_m_per_s=1e-4",
-                    "capillary.max_time_s=0.2", "mesh.subdivisions=3", "membrane.k_link_kBT=14",
-                    "membrane.k_area_kBT=10", "membrane.vertex_force_cap_pN=200"});
+                    "mesh.subdivisions=3", "membrane.k_link_kBT=14", "membrane.k_area_kBT=10",
+                    "membrane.vertex_force_cap_pN=200"});
   expect_passes_and_peaks_in_the_narrow_section(run, "discocyte");
   constexpr double kPapersPeak = 1.45;
   constexpr double kReadingPrecision = 0.05;

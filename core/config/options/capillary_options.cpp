@@ -75,10 +75,11 @@ void add_cell_options(OptionTable& table) {
                   "The cell has passed once its centroid is this far beyond the narrow section.")
       .above(0.0);
   table
-      .add_number("capillary.max_time_s", "s", kCapillaryDefaults.max_time_s,
+      .add_number("capillary.max_time_s", "s", 0.0,
                   "Simulated time allowed after release; a cell that has not passed by then "
-                  "fails the run.")
-      .above(0.0);
+                  "fails the run. 0: the time the mean inlet flow takes to cross the tube "
+                  "(a passing cell needs about a third of it).")
+      .at_least(0.0);
   table
       .add_number("capillary.sample_interval_s", "s", kCapillaryDefaults.sample_interval_s,
                   "Time between rows of capillary_timeseries.csv.")
