@@ -30,6 +30,15 @@ double paper_reynolds_number(const std::string& geometry) {
                                         : kPaperValidationReynoldsNumber;
 }
 
+// The time the mean inlet flow takes to cross the fluid box along x. A cell on the axis moves
+// faster than the mean: passing cells need about a third of it at every velocity we ran (README.md,
+// capillary), so as a time limit it stops a stuck cell without cutting a slow run short.
+double mean_flow_crossing_time_s(const CapillaryWall& wall, double mean_inlet_velocity_m_per_s) {
+  const auto bounds = wall.shape->fluid_bounds();
+  return (bounds.max_um.x() - bounds.min_um.x()) * kMetresPerMicrometre /
+         mean_inlet_velocity_m_per_s;
+}
+
 }  // namespace
 
 CapillaryWall capillary_wall_from(const config::Config& config) {
@@ -43,19 +52,6 @@ CapillaryWall capillary_wall_from(const config::Config& config) {
   return {geometry::make_wall_shape(geometry, built_in_parameters(config), "capillary"), geometry,
           "capillary.geometry"};
 }
-
-namespace {
-
-// The time the mean inlet flow takes to cross the fluid box along x. A cell on the axis moves
-// faster than the mean: passing cells need about a third of it at every velocity we ran (README.md,
-// capillary), so as a time limit it stops a stuck cell without cutting a slow run short.
-double mean_flow_crossing_time_s(const CapillaryWall& wall, double mean_inlet_velocity_m_per_s) {
-  const auto bounds = wall.shape->fluid_bounds();
-  return (bounds.max_um.x() - bounds.min_um.x()) * kMetresPerMicrometre /
-         mean_inlet_velocity_m_per_s;
-}
-
-}  // namespace
 
 cases::CapillarySettings capillary_settings_from(const config::Config& config,
                                                  const CapillaryWall& wall) {
