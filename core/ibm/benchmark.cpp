@@ -31,9 +31,8 @@ BenchmarkCase random_case(std::size_t point_count, const GridView& grid) {
   // Points stay one spacing away from the faces, inside a non-periodic grid too.
   const Vec3 span(grid.nx - 2.0, grid.ny - 2.0, grid.nz - 2.0);
   for (std::size_t point = 0; point < point_count; ++point) {
-    bench.positions.emplace_back(
-        Vec3::Ones() + span.cwiseProduct(Vec3(unit(generator), unit(generator), unit(generator))));
-    bench.forces.emplace_back(symmetric(generator), symmetric(generator), symmetric(generator));
+    bench.positions.emplace_back(Vec3::Ones() + span.cwiseProduct(random_vec3(unit, generator)));
+    bench.forces.push_back(random_vec3(symmetric, generator));
   }
   bench.velocities.resize(point_count);
   const std::size_t nodes = node_count(grid);

@@ -80,8 +80,7 @@ std::vector<Vec3> random_vectors(std::size_t count, const Vec3& low, const Vec3&
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<Vec3> vectors;
   for (std::size_t n = 0; n < count; ++n) {
-    vectors.push_back(
-        low + (high - low).cwiseProduct(Vec3(unit(generator), unit(generator), unit(generator))));
+    vectors.push_back(low + (high - low).cwiseProduct(rbcsim::random_vec3(unit, generator)));
   }
   return vectors;
 }

@@ -310,7 +310,9 @@ TEST(SimdMath, Atan2IsWithinFourUlpOfTheLibrary) {
       {1e-300, 1.0}, {1.0, 1e-300}, {3e-4, -2.0}};
   for (int i = 0; i < 200000; ++i) {
     const double scale = std::pow(10.0, 6.0 * uniform(generator));
-    points.emplace_back(scale * uniform(generator), scale * uniform(generator));
+    const double y = scale * uniform(generator);  // not drawn in emplace_back's arguments, whose
+    const double x = scale * uniform(generator);  // order the compiler picks
+    points.emplace_back(y, x);
   }
   for (const auto& [y, x] : points) {
     const double expected = std::atan2(y, x);

@@ -75,7 +75,7 @@ inline std::vector<Vec3> with_noise(std::vector<Vec3> positions_um, double noise
   std::normal_distribution<double> gaussian(0.0, 1.0);
   std::uniform_real_distribution<double> uniform(0.0, 1.0);
   for (auto& p : positions_um) {
-    const Vec3 direction = Vec3(gaussian(generator), gaussian(generator), gaussian(generator));
+    const Vec3 direction = rbcsim::random_vec3(gaussian, generator);
     p += noise_um * uniform(generator) * direction.normalized();
   }
   return positions_um;
