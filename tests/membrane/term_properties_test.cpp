@@ -2,6 +2,7 @@
 // distributions and every test shape, at a random small deformation (fixed seeds).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -9,7 +10,9 @@
 #include <tuple>
 #include <vector>
 
+#include "membrane/cell_geometry.hpp"
 #include "membrane/membrane_model.hpp"
+#include "mesh/topology.hpp"
 #include "test_shapes.hpp"
 
 namespace {
@@ -115,6 +118,17 @@ double max_force_pN(const std::vector<Vec3>& forces_pN) {
   return largest;
 }
 
+// Whether some edge of the mesh at these positions bends outwards and some inwards.
+bool has_edges_bending_both_ways(const rbcsim::mesh::TriangleMesh& mesh,
+                                 const std::vector<Vec3>& positions_um) {
+  const auto topology = rbcsim::mesh::MeshTopology::build(mesh);
+  rbcsim::membrane::CellGeometry geometry(mesh.triangle_count(), topology.edge_count());
+  rbcsim::membrane::measure_cell_geometry(positions_um, mesh.triangles, topology, geometry);
+  const auto& angles_rad = geometry.dihedral_angles_rad;
+  return std::ranges::any_of(angles_rad, [](double theta) { return theta > 0.0; }) &&
+         std::ranges::any_of(angles_rad, [](double theta) { return theta < 0.0; });
+}
+
 using TermCase = std::tuple<std::size_t, std::string, std::string>;  // shape, term, distribution
 
 class TermProperties : public ::testing::TestWithParam<TermCase> {
@@ -173,6 +187,12 @@ TEST_P(TermProperties, IsRestoring) {
   }
   const auto membrane = model();
   const auto positions = deformed();
+  // The `paper` total-curvature push is the area-difference one times sign(theta_j): on a shape
+  // whose edges all bend one way (a sphere, unless the noise flips an edge) it vanishes likewise.
+  if (distribution() == "paper" && term() == "total_curvature" &&
+      !has_edges_bending_both_ways(shape().mesh, positions)) {
+    GTEST_SKIP() << "every edge bends one way: identically zero, as the area difference";
+  }
   const auto before = evaluate_energy_and_forces(membrane, positions);
   const bool cell_term =
       term() == "volume" || term() == "area_difference" || term() == "total_curvature";
