@@ -70,7 +70,8 @@ TEST(ReportInputs, FailedAndInterruptedRunsAreListedButNotPlotted) {
   // Both stopped before their first force reached its steady shape: nothing to draw.
   auto failed = rbcsim::testing::stretch_run(rbcsim::testing::all_terms(), 90, 0.3);
   failed.status = "failed";
-  failed.section["points"] = {failed.section["points"][0]};
+  // json::array: a braced list of one json is a copy for clang and an array for GCC.
+  failed.section["points"] = nlohmann::json::array({failed.section["points"][0]});
   failed.section["points"][0]["converged"] = false;
   auto interrupted = rbcsim::testing::stretch_run(rbcsim::testing::four_terms(), 90, 0.3);
   interrupted.status = "interrupted";
