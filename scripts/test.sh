@@ -4,17 +4,22 @@
 set -euo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 jobs="$(nproc)"
-# clang with libFuzzer and its OpenMP runtime, for the fuzz stage at the end.
+# clang with its sanitizer and libFuzzer runtimes and its OpenMP runtime, for the sanitizer and
+# fuzz stages.
 export RBCSIM_EXTRA_PACKAGES="clang-14 libclang-rt-14-dev libomp-14-dev"
 
 echo "== release build (warnings are errors) and tests" >&2
 "$repo_root/scripts/setup.sh" "$repo_root/build" -DRBCSIM_WARNINGS_AS_ERRORS=ON
 ctest --test-dir "$repo_root/build" --output-on-failure --parallel "$jobs" -LE validate
 
-echo "== AddressSanitizer + UndefinedBehaviorSanitizer build and tests" >&2
+echo "== AddressSanitizer + UndefinedBehaviorSanitizer build (clang) and tests" >&2
 # -O1 -g1: what the sanitizers recommend, and it halves the compile time of -O2 -g on 2 cores.
-"$repo_root/scripts/setup.sh" "$repo_root/build-sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" -DRBCSIM_WARNINGS_AS_ERRORS=ON -DRBCSIM_SANITIZE=ON
+# clang rather than GCC: it builds this in two thirds of GCC's time, and with the release build
+# above every file compiles warning-free under both compilers (clang already found two tests that
+# relied on GCC's order of evaluating a call's arguments).
+"$repo_root/scripts/setup.sh" "$repo_root/build-sanitize" -DCMAKE_CXX_COMPILER=clang++-14 \
+  -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
+  -DRBCSIM_WARNINGS_AS_ERRORS=ON -DRBCSIM_SANITIZE=ON
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$repo_root/build-sanitize" --output-on-failure --parallel "$jobs" -LE validate
 
