@@ -57,8 +57,11 @@ void run_generate(const GenerateOptions& options) {
   const auto config = config::resolve_config(options.config);
   const auto shape = options.shape.value_or(config.string("morphology"));
   const auto subdivisions = options.subdivisions.value_or(config.integer("mesh.subdivisions"));
-  const auto cell =
-      mesh::generate_cell(shape, subdivisions, setup::cell_shape_parameters_from(config));
+  const auto parameters = setup::cell_shape_parameters_from(config);
+  const auto cell = mesh::generate_cell(shape, subdivisions, parameters);
+  if (const auto notice = mesh::resolution_notice(shape, subdivisions, parameters, cell)) {
+    std::cerr << "rbcsim: notice: " << *notice << '\n';
+  }
   if (!options.output.empty()) mesh::write_mesh_file(options.output, cell);
   nlohmann::ordered_json header = {{"shape", shape}, {"subdivisions", subdivisions}};
   if (!options.output.empty()) header["output"] = options.output;

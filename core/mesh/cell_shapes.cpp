@@ -1,8 +1,11 @@
 #include "mesh/cell_shapes.hpp"
 
 #include <array>
+#include <cmath>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
+#include "mesh/inspection.hpp"
 
 namespace rbcsim::mesh {
 namespace {
@@ -18,8 +21,17 @@ const std::array kCellShapes = {
         [](const CellShapeParameters& p, int n) { return stomatocyte_mesh(p.stomatocyte, n); }},
     CellShapeEntry{
         "echinocyte-III", "sphere with 36 evenly spaced rounded spicules",
-        [](const CellShapeParameters& p, int n) { return echinocyte_mesh(p.echinocyte, n); }},
+        [](const CellShapeParameters& p, int n) { return echinocyte_mesh(p.echinocyte, n); },
+        /*has_fine_features=*/true},
 };
+
+const CellShapeEntry& find_cell_shape(std::string_view shape_name) {
+  for (const auto& entry : kCellShapes) {
+    if (entry.name == shape_name) return entry;
+  }
+  throw InputError("--shape", "unknown cell shape '" + std::string(shape_name) +
+                                  "' (known: " + cell_shape_names() + ")");
+}
 
 }  // namespace
 
@@ -40,11 +52,26 @@ TriangleMesh generate_cell(std::string_view shape_name, int subdivisions,
     throw InputError("--subdivisions", "must be in 0.." + std::to_string(kMaxSubdivisions) +
                                            ", got " + std::to_string(subdivisions));
   }
-  for (const auto& entry : kCellShapes) {
-    if (entry.name == shape_name) return entry.generate(parameters, subdivisions);
-  }
-  throw InputError("--shape", "unknown cell shape '" + std::string(shape_name) +
-                                  "' (known: " + cell_shape_names() + ")");
+  return find_cell_shape(shape_name).generate(parameters, subdivisions);
+}
+
+std::optional<std::string> resolution_notice(std::string_view shape_name, int subdivisions,
+                                             const CellShapeParameters& parameters,
+                                             const TriangleMesh& mesh) {
+  const auto& entry = find_cell_shape(shape_name);
+  if (!entry.has_fine_features || subdivisions >= kMaxSubdivisions) return std::nullopt;
+  const auto coarse = inspect_mesh(mesh);
+  const auto finer = inspect_mesh(entry.generate(parameters, subdivisions + 1));
+  const double change = coarse.reduced_volume / finer.reduced_volume - 1.0;
+  if (std::abs(change) <= kResolvedReducedVolumeChange) return std::nullopt;
+  return std::string(shape_name) + " at mesh.subdivisions = " + std::to_string(subdivisions) +
+         " has a reduced volume of " + format_significant(coarse.reduced_volume, 3) + ", " +
+         format_significant(100.0 * std::abs(change), 2) + (change > 0 ? " % above" : " % below") +
+         " the " + format_significant(finer.reduced_volume, 3) + " at level " +
+         std::to_string(subdivisions + 1) + ": its edges (mean " +
+         format_significant(coarse.edge_mean_um, 2) +
+         " um) do not resolve the shape's features, and the generator, matching the membrane "
+         "area, made up for them with the body; use a finer level";
 }
 
 }  // namespace rbcsim::mesh

@@ -67,10 +67,15 @@ CellMesh cell_mesh_from(const config::Config& config) {
   }
   const auto shape = config.string("morphology");
   const auto level = config.integer("mesh.subdivisions");
-  return {mesh::generate_cell(shape, level, cell_shape_parameters_from(config)),
-          "built-in " + shape + " level " + std::to_string(level),
-          {},
-          {}};
+  const auto parameters = cell_shape_parameters_from(config);
+  CellMesh cell{mesh::generate_cell(shape, level, parameters),
+                "built-in " + shape + " level " + std::to_string(level),
+                {},
+                {}};
+  if (auto notice = mesh::resolution_notice(shape, level, parameters, cell.mesh)) {
+    cell.run_notices.push_back(std::move(*notice));
+  }
+  return cell;
 }
 
 void add_edge_spacing_notice(CellMesh& cell, double spacing_um) {

@@ -19,8 +19,9 @@ struct CellMesh {
   mesh::TriangleMesh mesh;
   std::string source;                // the file, or "built-in <shape> level N"
   std::vector<std::string> notices;  // repairs made on import, to tell the user
-  // About the cell against the run's set-up (add_edge_spacing_notice): told when the run starts,
-  // once every input has been checked, so that bad input still gets its one line.
+  // About the cell as the run will use it (a generated shape the mesh does not resolve,
+  // mesh::resolution_notice; edges against the lattice, add_edge_spacing_notice): told when the
+  // run starts, once every input has been checked, so that bad input still gets its one line.
   std::vector<std::string> run_notices;
 };
 

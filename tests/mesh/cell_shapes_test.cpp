@@ -217,6 +217,30 @@ TEST(CellShapes, RegistryGeneratesEveryShapeAsAClosedGenusZeroSurface) {
   EXPECT_EQ(cell_shape_names(), "discocyte, stomatocyte-II, echinocyte-III");
 }
 
+// The echinocyte's spicules (tip radius 0.25 um, ~1.6 um across at the base) are not resolved by
+// edges of ~0.5 um: the reduced volume at level 3 lies well above that at level 4, and a notice
+// says so; from level 4 to 5 it moves by less than kResolvedReducedVolumeChange and nothing is
+// said. A smooth shape is never checked, however coarse.
+TEST(CellShapes, UnresolvedSpiculesGetANoticeResolvedOnesAndSmoothShapesDoNot) {
+  const auto reduced_volume_at = [](int level) {
+    return inspect_mesh(generate_cell("echinocyte-III", level)).reduced_volume;
+  };
+  const double coarse = reduced_volume_at(3);
+  const double fine = reduced_volume_at(4);
+  ASSERT_GT(coarse / fine - 1.0, kResolvedReducedVolumeChange);
+  const auto notice =
+      resolution_notice("echinocyte-III", 3, {}, generate_cell("echinocyte-III", 3));
+  ASSERT_TRUE(notice.has_value());
+  EXPECT_NE(notice->find("echinocyte-III at mesh.subdivisions = 3"), std::string::npos) << *notice;
+  EXPECT_NE(notice->find("at level 4"), std::string::npos) << *notice;
+
+  EXPECT_EQ(resolution_notice("echinocyte-III", 4, {}, generate_cell("echinocyte-III", 4)),
+            std::nullopt);
+  EXPECT_EQ(resolution_notice("discocyte", 1, {}, generate_cell("discocyte", 1)), std::nullopt);
+  EXPECT_THROW(resolution_notice("spherocyte", 3, {}, generate_cell("discocyte", 3)),
+               rbcsim::InputError);
+}
+
 TEST(CellShapes, GenerationIsDeterministic) {
   const auto first = generate_cell("echinocyte-III", 3);
   const auto second = generate_cell("echinocyte-III", 3);

@@ -73,6 +73,19 @@ TEST(CellFromConfig, EchinocyteSpiculeCountReachesTheGenerator) {
   }
 }
 
+// mesh::resolution_notice reaches the run: told when it starts and kept in config.json.
+TEST(CellFromConfig, AGeneratedShapeTheMeshDoesNotResolveGetsARunNotice) {
+  const auto coarse = rbcsim::setup::cell_mesh_from(
+      resolve_config({.morphology = "echinocyte-III", .assignments = {"mesh.subdivisions=3"}}));
+  ASSERT_EQ(coarse.run_notices.size(), 1u);
+  EXPECT_NE(coarse.run_notices[0].find("echinocyte-III at mesh.subdivisions = 3"),
+            std::string::npos)
+      << coarse.run_notices[0];
+  const auto smooth = rbcsim::setup::cell_mesh_from(
+      resolve_config({.morphology = "stomatocyte-II", .assignments = {"mesh.subdivisions=3"}}));
+  EXPECT_TRUE(smooth.run_notices.empty());
+}
+
 TEST(CellFromConfig, ReadsTheConfiguredMeshFile) {
   const std::string file = RBCSIM_SOURCE_DIR "/meshes/discocyte_n3.stl";
   const auto cell =
