@@ -95,6 +95,32 @@ TEST(ReportInputs, FailedAndInterruptedRunsAreListedButNotPlotted) {
   }
 }
 
+// What a run told the user when it started (config.json run.notices) is in the Runs section
+// under the run's name and in summary.json; a run without notices gets neither.
+TEST(ReportInputs, RunNoticesAreShownUnderRuns) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto coarse = rbcsim::testing::capillary_run("echinocyte-III", 1.6e-3, 2.1);
+  coarse.notices = {"the mesh does not resolve the spicules", "edges < spacing & more"};
+  const auto plain = rbcsim::testing::capillary_run("discocyte", 1.4e-3, 2.2);
+  const auto documents = build_report(read_run_directories(
+      {write_run(scratch.path() / "coarse", coarse), write_run(scratch.path() / "plain", plain)}));
+  ASSERT_EQ(parse_xml(documents.html).error, "");
+  const auto coarse_name = (scratch.path() / "coarse").generic_string();
+  EXPECT_NE(
+      documents.html.find("Notice of " + coarse_name + ": the mesh does not resolve the spicules."),
+      std::string::npos);
+  EXPECT_NE(documents.html.find("Notice of " + coarse_name + ": edges &lt; spacing &amp; more."),
+            std::string::npos);
+  EXPECT_EQ(documents.html.find("Notice of " + (scratch.path() / "plain").generic_string()),
+            std::string::npos);
+  ASSERT_EQ(documents.summary.at("runs").size(), 2u);
+  for (const auto& run : documents.summary.at("runs")) {  // in the report's order of runs
+    const bool is_coarse = run.at("morphology") == "echinocyte-III";
+    EXPECT_EQ(run.at("notices"),
+              is_coarse ? nlohmann::json(coarse.notices) : nlohmann::json::array());
+  }
+}
+
 // A capillary run that stopped is drawn up to where it stopped (where a cell fails is worth
 // seeing), dashed and marked, but it has no transit: no bar, no row, no summary entry. One that
 // stopped before writing its time series is only listed.

@@ -39,6 +39,7 @@ struct FixtureRun {
   std::string time_series_csv = {};  // capillary_timeseries.csv when not empty
   // Merged into config.json (RFC 7386 merge patch), e.g. {"membrane": {"k_link_kBT": 3}}.
   nlohmann::json config_patch = nlohmann::json::object();
+  std::vector<std::string> notices = {};  // config.json run.notices
 };
 
 inline std::filesystem::path write_run(const std::filesystem::path& directory,
@@ -54,7 +55,8 @@ inline std::filesystem::path write_run(const std::filesystem::path& directory,
                           {"mesh_source", "built-in " + run.morphology},
                           {"mesh_sha256", std::string(64, 'a')},
                           {"threads", run.threads},
-                          {"started_utc", "2024-05-01T12:00:00Z"}};
+                          {"started_utc", "2024-05-01T12:00:00Z"},
+                          {"notices", run.notices}};
   nlohmann::json result = {{"command", run.command},         {"version", RBCSIM_VERSION},
                            {"morphology", run.morphology},   {"status", run.status},
                            {"wall_time_s", run.wall_time_s}, {"threads", run.threads},
