@@ -158,7 +158,8 @@ void run_calibrate_command(const CalibrateOptions& options) {
                     format_significant(curve.wall_time_s, 3) + " s");
   };
   const auto parameters = setup::membrane_parameters_from(config);
-  const auto cell_mesh = setup::cell_mesh_from(config);
+  auto cell_mesh = setup::cell_mesh_from(config);
+  setup::add_resolution_notice(cell_mesh, config);
   for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
 
   // One thread whatever --threads says: the patches have 8 vertices and the cell mode is a few

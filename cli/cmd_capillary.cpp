@@ -118,6 +118,7 @@ void run_capillary_command(const CapillaryOptions& options) {
   const auto wall = setup::capillary_wall_from(config);
   const auto settings = setup::capillary_settings_from(config, wall);
   auto cell_mesh = setup::cell_mesh_from(config);
+  setup::add_resolution_notice(cell_mesh, config);
   setup::add_edge_spacing_notice(cell_mesh, config.number("lattice.spacing_um"));
   for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
 

@@ -219,6 +219,7 @@ void run_shear_command(const ShearOptions& options) {
   const auto settings = setup::shear_settings_from(config);
   const auto parameters = setup::membrane_parameters_from(config);
   auto cell_mesh = setup::cell_mesh_from(config);
+  setup::add_resolution_notice(cell_mesh, config);
   setup::add_edge_spacing_notice(cell_mesh, config.number("lattice.spacing_um"));
   for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
   const auto cell = cases::in_shear_frame(cell_mesh.mesh);

@@ -175,6 +175,7 @@ void run_stretch_command(const StretchOptions& options) {
   require_fluid_mode_for_checkpoints(options, settings);
   const auto parameters = setup::membrane_parameters_from(config);
   auto cell_mesh = setup::cell_mesh_from(config);
+  setup::add_resolution_notice(cell_mesh, config);
   if (settings.mode == "fluid")
     setup::add_edge_spacing_notice(cell_mesh, config.number("lattice.spacing_um"));
   for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';

@@ -67,15 +67,18 @@ CellMesh cell_mesh_from(const config::Config& config) {
   }
   const auto shape = config.string("morphology");
   const auto level = config.integer("mesh.subdivisions");
-  const auto parameters = cell_shape_parameters_from(config);
-  CellMesh cell{mesh::generate_cell(shape, level, parameters),
-                "built-in " + shape + " level " + std::to_string(level),
-                {},
-                {}};
-  if (auto notice = mesh::resolution_notice(shape, level, parameters, cell.mesh)) {
-    cell.run_notices.push_back(std::move(*notice));
-  }
-  return cell;
+  return {mesh::generate_cell(shape, level, cell_shape_parameters_from(config)),
+          "built-in " + shape + " level " + std::to_string(level),
+          {},
+          {}};
+}
+
+void add_resolution_notice(CellMesh& cell, const config::Config& config) {
+  if (!config.string("mesh.file").empty()) return;
+  auto notice =
+      mesh::resolution_notice(config.string("morphology"), config.integer("mesh.subdivisions"),
+                              cell_shape_parameters_from(config), cell.mesh);
+  if (notice) cell.run_notices.push_back(std::move(*notice));
 }
 
 void add_edge_spacing_notice(CellMesh& cell, double spacing_um) {

@@ -28,6 +28,11 @@ struct CellMesh {
 // Throws rbcsim::InputError for an unreadable or defective mesh file.
 CellMesh cell_mesh_from(const config::Config& config);
 
+// For the experiment commands: appends mesh::resolution_notice to `cell.run_notices` when `cell`
+// is a generated shape its level does not resolve (the echinocyte III at 642 vertices). Apart
+// from cell_mesh_from because it generates the next level, 4 times the vertices.
+void add_resolution_notice(CellMesh& cell, const config::Config& config);
+
 // Membrane edges shorter than this many lattice spacings get a notice (add_edge_spacing_notice).
 // Measured (README.md, `rbcsim capillary`): the paper's 2562-vertex cell with edges of 0.5 dx
 // fails at the local-area limit in the validation capillary whatever the time step; with edges

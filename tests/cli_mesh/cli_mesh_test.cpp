@@ -57,6 +57,20 @@ TEST_F(CliMesh, GenerateWritesStlAndReportsJson) {
   EXPECT_EQ(fs::file_size(dir_ / "cell.stl"), 84u + 50u * 320u);
 }
 
+// A shape the level does not resolve (mesh::resolution_notice) is still written, with a notice
+// on stderr that leaves stdout's JSON clean; a resolved one prints nothing there.
+TEST_F(CliMesh, GenerateTellsOfUnresolvedSpiculesOnStderr) {
+  const auto coarse = run("mesh generate --shape echinocyte-III --subdivisions 2 --json");
+  ASSERT_EQ(coarse.exit_code, 0) << coarse.err;
+  EXPECT_EQ(nlohmann::json::parse(coarse.out)["report"]["counts"]["vertices"], 162);
+  EXPECT_EQ(coarse.err.rfind("rbcsim: notice: echinocyte-III at mesh.subdivisions = 2 has a ", 0),
+            0u)
+      << coarse.err;
+  const auto smooth = run("mesh generate --shape discocyte --subdivisions 2 --json");
+  ASSERT_EQ(smooth.exit_code, 0) << smooth.err;
+  EXPECT_EQ(smooth.err, "");
+}
+
 TEST_F(CliMesh, InfoOfAGeneratedMeshPrintsATable) {
   ASSERT_EQ(run("mesh generate --shape stomatocyte-II --subdivisions 2 -o cup.vtp").exit_code, 0);
   ASSERT_EQ(run("mesh generate --shape stomatocyte-II --subdivisions 2 -o cup.stl").exit_code, 0);

@@ -73,17 +73,26 @@ TEST(CellFromConfig, EchinocyteSpiculeCountReachesTheGenerator) {
   }
 }
 
-// mesh::resolution_notice reaches the run: told when it starts and kept in config.json.
+// mesh::resolution_notice reaches the run: told when it starts and kept in config.json. A mesh
+// file is the user's own and is not compared with anything.
 TEST(CellFromConfig, AGeneratedShapeTheMeshDoesNotResolveGetsARunNotice) {
-  const auto coarse = rbcsim::setup::cell_mesh_from(
-      resolve_config({.morphology = "echinocyte-III", .assignments = {"mesh.subdivisions=3"}}));
+  const auto config =
+      resolve_config({.morphology = "echinocyte-III", .assignments = {"mesh.subdivisions=3"}});
+  auto coarse = rbcsim::setup::cell_mesh_from(config);
+  EXPECT_TRUE(coarse.run_notices.empty());
+  rbcsim::setup::add_resolution_notice(coarse, config);
   ASSERT_EQ(coarse.run_notices.size(), 1u);
   EXPECT_NE(coarse.run_notices[0].find("echinocyte-III at mesh.subdivisions = 3"),
             std::string::npos)
       << coarse.run_notices[0];
-  const auto smooth = rbcsim::setup::cell_mesh_from(
-      resolve_config({.morphology = "stomatocyte-II", .assignments = {"mesh.subdivisions=3"}}));
-  EXPECT_TRUE(smooth.run_notices.empty());
+
+  const std::string file = RBCSIM_SOURCE_DIR "/meshes/echinocyte-III_n3.stl";
+  const auto from_file =
+      resolve_config({.morphology = "echinocyte-III",
+                      .assignments = {"mesh.subdivisions=3", "mesh.file=" + file}});
+  auto imported = rbcsim::setup::cell_mesh_from(from_file);
+  rbcsim::setup::add_resolution_notice(imported, from_file);
+  EXPECT_TRUE(imported.run_notices.empty());
 }
 
 TEST(CellFromConfig, ReadsTheConfiguredMeshFile) {
