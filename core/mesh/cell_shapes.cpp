@@ -61,17 +61,28 @@ std::optional<std::string> resolution_notice(std::string_view shape_name, int su
   const auto& entry = find_cell_shape(shape_name);
   if (!entry.has_fine_features || subdivisions >= kMaxSubdivisions) return std::nullopt;
   const auto coarse = inspect_mesh(mesh);
-  const auto finer = inspect_mesh(entry.generate(parameters, subdivisions + 1));
+  const auto at_level =
+      std::string(shape_name) + " at mesh.subdivisions = " + std::to_string(subdivisions);
+  const auto edges = "its edges (mean " + format_significant(coarse.edge_mean_um, 2) + " um)";
+  const auto finer_level = std::to_string(subdivisions + 1);
+  MeshReport finer;
+  try {
+    finer = inspect_mesh(entry.generate(parameters, subdivisions + 1));
+  } catch (const InputError& error) {
+    // The finer mesh finds more feature area than the membrane has: the shape asked for does not
+    // exist, and this level's coarse edges hide it. Told, not an error: this level was generated.
+    return at_level + ": " + edges + " hide that the shape's features need more area than the " +
+           "membrane has (at level " + finer_level + ": " + error.what() +
+           "); change the shape's parameters";
+  }
   const double change = coarse.reduced_volume / finer.reduced_volume - 1.0;
   if (std::abs(change) <= kResolvedReducedVolumeChange) return std::nullopt;
-  return std::string(shape_name) + " at mesh.subdivisions = " + std::to_string(subdivisions) +
-         " has a reduced volume of " + format_significant(coarse.reduced_volume, 3) + ", " +
-         format_significant(100.0 * std::abs(change), 2) + (change > 0 ? " % above" : " % below") +
-         " the " + format_significant(finer.reduced_volume, 3) + " at level " +
-         std::to_string(subdivisions + 1) + ": its edges (mean " +
-         format_significant(coarse.edge_mean_um, 2) +
-         " um) do not resolve the shape's features, and the generator, matching the membrane "
-         "area, made up for them with the body; use a finer level";
+  return at_level + " has a reduced volume of " + format_significant(coarse.reduced_volume, 3) +
+         ", " + format_significant(100.0 * std::abs(change), 2) +
+         (change > 0 ? " % above" : " % below") + " the " +
+         format_significant(finer.reduced_volume, 3) + " at level " + finer_level + ": " + edges +
+         " do not resolve the shape's features, and the generator, matching the membrane area, "
+         "made up for them with the body; use a finer level";
 }
 
 }  // namespace rbcsim::mesh
