@@ -86,6 +86,10 @@ RunDirectory read_run_directory(const std::filesystem::path& directory) {
 
   run.forces = string_list(run.config_field().at("membrane").at("forces"));
   run.terms = describe_terms(run.forces);
+  // Older run directories have no run.notices: none told.
+  if (const auto run_object = run.config_field().find("run")) {
+    if (const auto notices = run_object->find("notices")) run.notices = string_list(*notices);
+  }
   return run;
 }
 

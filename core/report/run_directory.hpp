@@ -18,10 +18,11 @@ struct RunDirectory {
   std::string command;     // result.json "command": calibrate, stretch, shear, capillary, ...
   std::string morphology;  // result.json "morphology"
   std::string status;      // result.json "status": "ok", "failed" or "interrupted"
-  std::vector<std::string> forces;  // config.json membrane.forces, the enabled terms
-  std::string terms;                // describe_terms(forces)
-  nlohmann::json config;            // config.json as written
-  nlohmann::json result;            // result.json as written
+  std::vector<std::string> forces;   // config.json membrane.forces, the enabled terms
+  std::string terms;                 // describe_terms(forces)
+  std::vector<std::string> notices;  // config.json run.notices: told when the run started
+  nlohmann::json config;             // config.json as written
+  nlohmann::json result;             // result.json as written
 
   bool succeeded() const { return status == "ok"; }
   // Checked reads of the two documents; diagnostics name the file.

@@ -34,20 +34,6 @@ std::vector<std::string> run_row(const RunDirectory& run) {
           format_cell(result.at("threads"))};
 }
 
-// config.json run.notices: what the run told the user when it started (a coarse generated shape,
-// short edges against the lattice); empty for a run directory without them.
-std::vector<std::string> run_notices(const RunDirectory& run) {
-  const auto run_object = run.config.find("run");
-  if (run_object == run.config.end() || !run_object->is_object()) return {};
-  const auto notices = run_object->find("notices");
-  if (notices == run_object->end() || !notices->is_array()) return {};
-  std::vector<std::string> texts;
-  for (const auto& notice : *notices) {
-    if (notice.is_string()) texts.push_back(notice.get<std::string>());
-  }
-  return texts;
-}
-
 }  // namespace
 
 Section build_runs_section(const RunList& runs) {
@@ -63,7 +49,7 @@ Section build_runs_section(const RunList& runs) {
   for (const auto* run : runs) table.rows.push_back(run_row(*run));
   section.blocks.emplace_back(std::move(table));
   for (const auto* run : runs) {
-    for (const auto& notice : run_notices(*run)) {
+    for (const auto& notice : run->notices) {
       section.blocks.emplace_back(
           Paragraph{"Notice of " + run->directory.generic_string() + ": " + notice + "."});
     }
@@ -79,7 +65,7 @@ Section build_runs_section(const RunList& runs) {
     for (const auto* key : {"command", "status", "version", "wall_time_s", "threads", "headline"}) {
       entry[key] = run->result.at(key);
     }
-    entry["notices"] = run_notices(*run);
+    entry["notices"] = run->notices;
     section.summary.push_back(std::move(entry));
   }
   return section;

@@ -386,6 +386,18 @@ TEST(ReportInputs, ConfigWithoutMembraneForcesIsNamed) {
             (run / "config.json").string() + ": /membrane: missing member \"forces\"");
 }
 
+// run.notices is optional (older run directories), but when present it is read like the rest.
+TEST(ReportInputs, MalformedRunNoticesAreNamed) {
+  rbcsim::testing::ScratchDirectory scratch;
+  const auto run = write_run(scratch.path() / "run", rbcsim::testing::calibrate_run());
+  write_file(run / "config.json",
+             R"({"membrane": {"forces": ["link"]}, "run": {"notices": ["fine", 3]}})");
+  EXPECT_EQ(report_error({run}), (run / "config.json").string() +
+                                     ": /run/notices/1: expected a string, found an integer");
+  write_file(run / "config.json", R"({"membrane": {"forces": ["link"]}, "run": {}})");
+  EXPECT_EQ(report_error({run}), "no error");
+}
+
 TEST(ReportInputs, BadCapillaryTimeSeriesIsNamed) {
   rbcsim::testing::ScratchDirectory scratch;
   auto capillary = rbcsim::testing::capillary_run("discocyte", 1e-3, 1.4);
