@@ -1,9 +1,9 @@
 // rbcsim bench [--json] [--threads N] [--verbose]: what this machine and this build achieve
-// (DESIGN.md §5), in one run — memory bandwidth (STREAM triad), fluid-only MLUPS on HemoCell's
-// 40x40x20 lattice and on one far beyond the last-level cache, the fraction of the DRAM roofline,
-// and ms per coupled step with a 642- and a 2562-vertex cell — for one thread and for all, beside
-// HemoCell's figures on the same machine. Wall-clock measurements: other load lowers them, so the
-// machine's load average is printed with them.
+// (docs/performance.md), in one run — memory bandwidth (STREAM triad), fluid-only MLUPS on
+// HemoCell's 40x40x20 lattice and on one far beyond the last-level cache, the fraction of the DRAM
+// roofline, and ms per coupled step with a 642- and a 2562-vertex cell — for one thread and for
+// all, beside HemoCell's figures on the same machine. Wall-clock measurements: other load lowers
+// them, so the machine's load average is printed with them.
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -28,7 +28,7 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// HemoCell built from source on the project machine, same cases (DESIGN.md §5).
+// HemoCell built from source on the project machine, same cases (docs/performance.md).
 constexpr double kHemoCellFluidMlupsPerCore = 3.5;
 constexpr double kHemoCellCoupledMsOneCore = 12.0;  // 11-13 ms per step, 642-vertex cell
 constexpr double kHemoCellCoupledMsTwoCores = 7.0;

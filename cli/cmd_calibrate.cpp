@@ -1,4 +1,4 @@
-// rbcsim calibrate: the patch tests (DESIGN.md §4): what the membrane's k parameters mean as
+// rbcsim calibrate: the patch tests (paper §2.3): what the membrane's k parameters mean as
 // moduli, and the k that give target moduli, written as a config file the other commands accept.
 #include <CLI/CLI.hpp>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// rbcsim capillary: one cell through a stenosed capillary (DESIGN.md §4, paper §3.3-3.4):
+// rbcsim capillary: one cell through a stenosed capillary (paper §3.3-3.4):
 // deformation index against time, transit time through the narrow section, Reynolds and
 // capillary numbers.
 #include <CLI/CLI.hpp>

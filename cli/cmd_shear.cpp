@@ -1,4 +1,4 @@
-// rbcsim shear: one cell in simple shear flow, swept over shear rates (DESIGN.md §4): length,
+// rbcsim shear: one cell in simple shear flow, swept over shear rates (paper §3.2): length,
 // breadth, deformation index, inclination, tank-treading frequency, surface smoothness and
 // mesh-scale roughness of the steady shape at each rate (paper Figs. 9-11).
 #include <CLI/CLI.hpp>

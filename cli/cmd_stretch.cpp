@@ -1,4 +1,4 @@
-// rbcsim stretch: the optical-tweezers experiment (DESIGN.md §4): axial and transverse diameters
+// rbcsim stretch: the optical-tweezers experiment (paper §3.1): axial and transverse diameters
 // of the cell against the pulling force, compared with Mills et al. (2004).
 #include <CLI/CLI.hpp>
 #include <array>

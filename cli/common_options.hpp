@@ -1,7 +1,7 @@
-// The options every subcommand shares (DESIGN.md §1): --config, --set, --morphology, --output,
-// --threads, --json, --quiet, --verbose. A subcommand declares a CommonOptions that outlives the
-// parse (e.g. in a shared_ptr captured by its callback), calls add_common_options, and in its
-// callback calls resolve_config.
+// The options every subcommand shares (docs/commands/README.md): --config, --set, --morphology,
+// --output, --threads, --json, --quiet, --verbose. A subcommand declares a CommonOptions that
+// outlives the parse (e.g. in a shared_ptr captured by its callback), calls add_common_options, and
+// in its callback calls resolve_config.
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -1,4 +1,4 @@
-// rbcsim: entry point. Maps failures onto exit codes (DESIGN.md §1):
+// rbcsim: entry point. Maps failures onto exit codes (README.md, "Exit codes"):
 // 0 success, 1 runtime failure (instability, NaN), 2 bad input (usage, config, mesh), 130
 // interrupted by SIGINT or SIGTERM (the results so far written).
 #include <CLI/CLI.hpp>

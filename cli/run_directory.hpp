@@ -84,10 +84,10 @@ std::string config_fingerprint(const config::Config& config);
 std::string summary_heading(const std::string& command, const std::string& variant,
                             const nlohmann::ordered_json& result);
 
-// Progress on stderr (DESIGN.md §1: results go to files and stdout, so pipelines never see
-// progress). On a terminal, unless --quiet: one line, overwritten. Otherwise only with --verbose,
-// for runs of hours logged to a file: whole lines, the first at once and then at most one per
-// kLogIntervalS (a capillary run updates every kProgressIntervalSteps steps).
+// Progress on stderr (docs/architecture.md: results go to files and stdout, so pipelines
+// never see progress). On a terminal, unless --quiet: one line, overwritten. Otherwise only with
+// --verbose, for runs of hours logged to a file: whole lines, the first at once and then at most
+// one per kLogIntervalS (a capillary run updates every kProgressIntervalSteps steps).
 class Progress {
  public:
   static constexpr double kLogIntervalS = 30.0;

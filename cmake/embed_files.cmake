@@ -1,5 +1,5 @@
 # Writes a C++ source that holds files of share/ as string literals, so that the rbcsim binary
-# runs anywhere with its defaults (DESIGN.md §1, "Embedded defaults").
+# runs anywhere with its defaults (docs/architecture.md, "Embedded defaults").
 # Run as: cmake -DBASE_DIR=<share> -DFILES=<a|b|...> -DOUTPUT=<file.cpp> -P embed_files.cmake
 # FILES are paths relative to BASE_DIR separated by '|'. Each byte becomes a \x escape, so any
 # content (quotes, backslashes, non-ASCII) survives unchanged.

@@ -10,13 +10,13 @@
 #      (k_link fitted to Mills' curve, the contact patches held rigid as by glued beads: ~4 min)
 #      and the curve with the fitted parameters;
 #   4. shear: a short sweep (0, 1000, 2000 1/s) of each morphology with and without F_ad/F_tc, on
-#      the coarse setting of README.md (642 vertices, dx 0.75 um, 10 strains: not yet steady);
-#   5. capillary, 642-vertex cells with Table 2's moduli (k_link, k_area x2; README.md) on the
+#      the coarse setting of docs/validation.md (642 vertices, dx 0.75 um, 10 strains: not steady);
+#   5. capillary, 642-vertex cells with Table 2's moduli (k_link, k_area x2; docs/physics.md) on the
 #      paper's dx 0.5 um: the discocyte through the validation tube (6.75 um throat, Re 0.0643)
 #      with and without F_ad/F_tc (the paper's Fig. 13), and the three morphologies through the
 #      three-morphology tube (6.8 um throat, Re 0.04);
 #   6. report: out/report/report.html, summary.md, summary.json over every run above.
-# How far each setting is from the paper's is in README.md ("The main job").
+# How far each setting is from the paper's is in docs/validation.md ("The main job's settings").
 set -euo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 output_dir="${1:-$repo_root/out}"
@@ -77,8 +77,8 @@ stage "capillary (the validation tube: discocyte with and without F_ad/F_tc; thr
 # as the 2562-vertex cell's, and both the link and the local-area modulus go as k / L0 (the
 # hexagonal patch test of `rbcsim calibrate`), so k_link and k_area are doubled. Edges about one
 # lattice spacing long are what lets the cell through: the 2562-vertex cell on this lattice (edges
-# dx / 2) fails at the area limit before the throat (README.md, capillary). The vertex cap is
-# 4 x 50 pN: a vertex here carries four paper vertices' share. The paper's validation tube (§3.3,
+# dx / 2) fails at the area limit before the throat (docs/validation.md, capillary). The vertex cap
+# is 4 x 50 pN: a vertex here carries four paper vertices' share. The paper's validation tube (§3.3,
 # Fig. 13: 31.2 um, 6.75 um throat, Re 0.0643) with the discocyte, with and without F_ad/F_tc; then
 # the three morphologies through the three-morphology tube (§3.4: 42 um, 6.8 um throat, Re 0.04).
 # One thread per run, the five runs side by side.

@@ -1,4 +1,4 @@
-// The bending calibrations (paper §2.3; DESIGN.md §4 "calibrate").
+// The bending calibrations (paper §2.3; docs/physics.md, "Calibration").
 //
 // Two-triangle patch: two equilateral triangles of edge a sharing an edge, flat at rest, folded
 // by a small dtheta through the bending term (Eq. 7) and the configured distribution (the
@@ -31,10 +31,10 @@ struct TwoTrianglePatchMeasurement {
 TwoTrianglePatchMeasurement measure_two_triangle_patch(
     const membrane::MembraneParameters& parameters, double edge_um, double angle_rad);
 
-// D of the same pair in closed form (README): the moment stiffness is K_b (1 + 1/tau_b^2) per rad,
-// with K_b = (sqrt 3 / 2) k_b kBT for `gradient` (the hinge energy's coefficient) and the `paper`
-// wing push (k_b kBT / L0) slope(d) times its arm h = (sqrt 3 / 2) a; with dx / a = 1 / sqrt 3:
-// D = k_b kBT (1 + 1/tau_b^2) / 2, times a / L0 for `paper`.
+// D of the same pair in closed form (docs/physics.md, "Calibration"): the moment stiffness is K_b
+// (1 + 1/tau_b^2) per rad, with K_b = (sqrt 3 / 2) k_b kBT for `gradient` (the hinge energy's
+// coefficient) and the `paper` wing push (k_b kBT / L0) slope(d) times its arm h = (sqrt 3 / 2) a;
+// with dx / a = 1 / sqrt 3: D = k_b kBT (1 + 1/tau_b^2) / 2, times a / L0 for `paper`.
 double analytic_two_triangle_bending_modulus_J(const membrane::MembraneParameters& parameters,
                                                double edge_um);
 

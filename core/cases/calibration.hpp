@@ -1,4 +1,4 @@
-// The calibrate experiment (DESIGN.md §4 "calibrate", paper §2.3): measures what the membrane's
+// The calibrate experiment (paper §2.3; docs/commands/calibrate.md): measures what the membrane's
 // k parameters mean on the patch tests and fits them to target moduli.
 //
 //   auto calibration = run_calibration(cell_mesh, membrane_parameters, settings);

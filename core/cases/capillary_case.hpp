@@ -1,4 +1,4 @@
-// One cell through a stenosed capillary (DESIGN.md §4 "capillary", paper §3.3-3.4):
+// One cell through a stenosed capillary (paper §3.3-3.4; docs/physics.md):
 //
 //   1. the fluid alone (capillary_flow.hpp) run from rest to its steady state;
 //   2. the cell released at rest on the tube axis, its upstream end release_gap_um downstream of

@@ -1,4 +1,4 @@
-// The fluid of the capillary experiment (DESIGN.md §4 "capillary"): a wall shape whose lumen runs
+// The fluid of the capillary experiment (docs/commands/capillary.md): a wall shape whose lumen runs
 // along +x (a built-in capillary or an STL wall open along x), on a lattice with one inflow and one
 // outflow layer, driven by a velocity inlet with a Poiseuille profile and a pressure outlet.
 //

@@ -1,4 +1,4 @@
-// The observables of the capillary experiment (DESIGN.md §4 "capillary", paper §3.3-3.4), as pure
+// The observables of the capillary experiment (paper §3.3-3.4; docs/physics.md), as pure
 // functions of vertex positions and velocities (any one length unit throughout), and the transit
 // of the cell's centroid through the narrow section.
 //

@@ -1,4 +1,4 @@
-// Where the optical tweezers hold the cell (DESIGN.md §4 "stretch"): two contact patches at the
+// Where the optical tweezers hold the cell (docs/physics.md, "Stretch"): two contact patches at the
 // two ends of the pull axis x, chosen by a named rule (one table, contact_patches.cpp):
 //   "contact-diameter"  (default) the vertices within a Euclidean distance diameter_um / 2 of the
 //                       end vertex (the vertex of largest, resp. smallest, x): the membrane under

@@ -1,4 +1,4 @@
-// The "fluid" stretch mode (DESIGN.md §4 "stretch", paper §3.1): the cell in a periodic box of
+// The "fluid" stretch mode (paper §3.1; docs/physics.md): the cell in a periodic box of
 // fluid at rest, the tweezer forces a coupling::ExternalForce, each force run until the axial
 // and transverse diameters are both steady (coupling::stop_at_steady_state) or until
 // max_time_per_force_s. The forces are applied in order to one simulation, each continuing from
@@ -12,15 +12,15 @@
 // goes on to the next force, the failure naming every such force; an instability (coupling's
 // stability checks) stops the run there, its point recorded.
 //
-// Checkpoints (DESIGN.md §6): settings.fluid.configure gets the simulation before the first force
-// (a policy, a resume). The curve's progress rides in the simulation's checkpoint as a stop
+// Checkpoints (docs/architecture.md): settings.fluid.configure gets the simulation before the first
+// force (a policy, a resume). The curve's progress rides in the simulation's checkpoint as a stop
 // criterion that never stops: the force being applied, its ramp and start record (step, force-cap
 // count, largest speed, wall time so far), the points measured before it; the force's stop
 // criterion carries its deadline and steady-state checks. A resumed run continues that force at
 // the checkpoint's step and ends with the straight run's points, bit for bit (checkpoints after an
-// even number of fluid steps; core/coupling/README.md). An interrupt (common/interrupt.hpp) ends
-// the run with StretchRun::interrupted and the points of the forces done; the unfinished force is
-// not a point.
+// even number of fluid steps; docs/architecture.md, "Reliability"). An interrupt
+// (common/interrupt.hpp) ends the run with StretchRun::interrupted and the points of the forces
+// done; the unfinished force is not a point.
 #pragma once
 
 #include <array>

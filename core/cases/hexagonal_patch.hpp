@@ -1,4 +1,4 @@
-// The hexagonal patch test (paper §2.3 and Fig. 7; DESIGN.md §4 "calibrate"): a centre node and
+// The hexagonal patch test (paper §2.3 and Fig. 7; docs/physics.md): a centre node and
 // its six neighbours at the edge length a, 12 links and 6 equilateral triangles, with the link
 // (Eq. 6) and local-area (Eq. 8) terms of the membrane model. The six boundary nodes are moved by
 // a small affine map x -> (I + eps G) x (uniaxial, pure shear, isotropic expansion); the stress is
@@ -56,9 +56,9 @@ HexagonalPatchMeasurement measure_hexagonal_patch(const membrane::MembraneParame
 PatchStiffness measure_patch_stiffness(const membrane::MembraneParameters& parameters,
                                        double edge_um, double strain);
 
-// The same in closed form (derived in the README): a link is a spring of stiffness
-// k_s = (k_l kBT / p)(1 + 1/tau_l^2) / a, so mu = (sqrt 3 / 4) k_s and K_link = 2 mu; the area
-// term's energy per triangle (k_a kBT / L0)(6 A0 / P0)(1 + 1/tau_a^2) d^2 / 2 over its area A0
+// The same in closed form (derived in docs/physics.md, "Calibration"): a link is a spring of
+// stiffness k_s = (k_l kBT / p)(1 + 1/tau_l^2) / a, so mu = (sqrt 3 / 4) k_s and K_link = 2 mu; the
+// area term's energy per triangle (k_a kBT / L0)(6 A0 / P0)(1 + 1/tau_a^2) d^2 / 2 over its area A0
 // adds K_area = 2 k_a kBT (1 + 1/tau_a^2) / (L0 a) to K and nothing to mu.
 PatchStiffness analytic_patch_stiffness(const membrane::MembraneParameters& parameters,
                                         double edge_um);

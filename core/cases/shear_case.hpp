@@ -1,4 +1,4 @@
-// One cell in simple shear flow, swept over shear rates (DESIGN.md §4 "shear", paper §3.2,
+// One cell in simple shear flow, swept over shear rates (paper §3.2,
 // Figs. 9-11: the experiment of Bessis & Mohandas 1975).
 //
 //   auto cell = in_shear_frame(mesh);                      // symmetry axis along y, centred

@@ -1,4 +1,4 @@
-// The observables of the shear experiment (DESIGN.md §4 "shear", paper §3.2): pure functions of a
+// The observables of the shear experiment (paper §3.2; docs/physics.md): pure functions of a
 // cell's vertex positions in the shear frame (flow along x, velocity gradient along y, vorticity
 // along z; the shear plane is x-y).
 //

@@ -1,4 +1,4 @@
-// The optical-tweezers stretch (DESIGN.md §4 "stretch", paper §3.1): a total force F pulls each
+// The optical-tweezers stretch (paper §3.1; docs/physics.md): a total force F pulls each
 // of two contact patches at the ends of the cell's long axis in opposite directions; for each F
 // the cell is brought to its steady shape and the axial and transverse diameters are recorded.
 //

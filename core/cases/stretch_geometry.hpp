@@ -1,4 +1,4 @@
-// The frame and the observables of the stretch experiment (DESIGN.md §4 "stretch").
+// The frame and the observables of the stretch experiment (paper §3.1; docs/physics.md, "Stretch").
 //
 // Frame: the pull axis is x, through the solid centroid at the origin, and z the cell's thinnest
 // axis (the microscope's line of sight: the disc lies in the focal plane). A cell whose x axis is

@@ -1,4 +1,4 @@
-// Error kinds that map onto the process exit codes of DESIGN.md §1:
+// Error kinds that map onto the process exit codes (README.md, "Exit codes"):
 //   InputError     -> exit 2 (bad usage, config, mesh: the user can fix the input)
 //   RuntimeFailure -> exit 1 (instability, NaN: the simulation itself failed)
 //   Interrupted    -> exit 130 (SIGINT/SIGTERM, common/interrupt.hpp; 128 + 2 as shells report

@@ -1,7 +1,7 @@
-// Wall-clock timing for the benchmarks (DESIGN.md §5: measure, don't assert). Calls are timed in
-// short batches and the fastest batch counts: on a machine shared with other processes the mean
-// mostly measures them (one descheduled thread stalls an OpenMP barrier for a whole time slice),
-// while the fastest batch approaches the code's own cost.
+// Wall-clock timing for the benchmarks (docs/performance.md: measure, don't assert). Calls are
+// timed in short batches and the fastest batch counts: on a machine shared with other processes the
+// mean mostly measures them (one descheduled thread stalls an OpenMP barrier for a whole time
+// slice), while the fastest batch approaches the code's own cost.
 #pragma once
 
 #include <algorithm>

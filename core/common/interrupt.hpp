@@ -1,8 +1,9 @@
-// Ctrl-C and `kill` (DESIGN.md §6: "Ctrl-C writes what has been computed"). The signal handlers
-// only set a process-wide flag (async-signal-safe); every time loop calls throw_if_interrupted()
-// once per step or iteration, so the run unwinds at a clean point between steps, and the command
-// writes its results so far (status "interrupted") and a checkpoint, then exits with
-// kExitInterrupted. A second signal while the first is being handled ends the process at once.
+// Ctrl-C and `kill` (docs/architecture.md: Ctrl-C writes what has been computed). The signal
+// handlers only set a process-wide flag (async-signal-safe); every time loop calls
+// throw_if_interrupted() once per step or iteration, so the run unwinds at a clean point between
+// steps, and the command writes its results so far (status "interrupted") and a checkpoint, then
+// exits with kExitInterrupted. A second signal while the first is being handled ends the process at
+// once.
 #pragma once
 
 namespace rbcsim {

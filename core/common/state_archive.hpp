@@ -1,4 +1,4 @@
-// What a checkpoint holds (DESIGN.md §6: long runs checkpoint and resume): named arrays of
+// What a checkpoint holds (docs/architecture.md: long runs checkpoint and resume): named arrays of
 // doubles that each stateful part of a simulation puts when saved and takes back when restored.
 // Counts (steps) are stored as doubles, exact up to 2^53. A restore checks every array's size
 // against what the receiving object needs, so a checkpoint of another setup is refused with the

@@ -1,6 +1,6 @@
-// The ONE option table of rbcsim (DESIGN.md §2). The parser, the defaults, `config show` and the
-// JSON Schema (schemas/config.schema.json) are all derived from these rows, so an option exists,
-// is documented and is validated the moment its row is added.
+// The ONE option table of rbcsim (docs/architecture.md). The parser, the defaults, `config show`
+// and the JSON Schema (schemas/config.schema.json) are all derived from these rows, so an option
+// exists, is documented and is validated the moment its row is added.
 //
 // Rows are added per area in core/config/options/<area>_options.cpp; to add an option, edit the
 // file of its area. Paths are dotted ("membrane.k_link_kBT") and carry their unit in the name.

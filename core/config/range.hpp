@@ -1,5 +1,5 @@
-// Lists of values on the command line (--rates, --forces; DESIGN.md §1). The text is one or more
-// comma-separated items, each
+// Lists of values on the command line (--rates, --forces; docs/commands/README.md). The text is one
+// or more comma-separated items, each
 //   a number                "500"
 //   start:stop:step         "0:2000:250"  -> 0, 250, ..., 2000 (stop included when it lands on a
 //                                            step; a negative step counts down)

@@ -30,9 +30,9 @@ std::optional<std::string> closest_match(std::string_view word,
 // known key put in the wrong group ("k_bend_kBT" -> "membrane.k_bend_kBT").
 std::optional<std::string> closest_known_path(std::string_view path);
 
-// "Cell larger than the domain" (DESIGN.md §6), checked before a run is set up: along each axis,
-// the cell's extent plus clearance_spacings * spacing_um on both sides must fit in the domain's
-// extent (a periodic box: its length, so that the cell's kernel support stays clear of its
+// "Cell larger than the domain" (docs/architecture.md), checked before a run is set up: along each
+// axis, the cell's extent plus clearance_spacings * spacing_um on both sides must fit in the
+// domain's extent (a periodic box: its length, so that the cell's kernel support stays clear of its
 // image's; between walls: the gap). The clearance is the immersed-boundary kernel's reach,
 // support_width / 2 (phi2: 1, phi4: 2). Throws InputError(what, ...) naming the axis and the sizes.
 void require_cell_fits_domain(const std::array<double, 3>& cell_extent_um,

@@ -1,5 +1,5 @@
-// Measurements behind `rbcsim bench` (DESIGN.md §5): the machine, its memory bandwidth, and the
-// cost of one coupled step. Measure, don't assert: wall-clock times, so other processes on the
+// Measurements behind `rbcsim bench` (docs/performance.md): the machine, its memory bandwidth, and
+// the cost of one coupled step. Measure, don't assert: wall-clock times, so other processes on the
 // machine lower the numbers (the fastest of several batches is reported to limit that).
 #pragma once
 

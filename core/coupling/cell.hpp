@@ -1,5 +1,5 @@
-// One cell of a coupled simulation (DESIGN.md §3.3): its membrane model, where its vertices are,
-// and the arrays each step fills. Vertex positions live in lattice units (node (i, j, k) at
+// One cell of a coupled simulation (docs/architecture.md): its membrane model, where its vertices
+// are, and the arrays each step fills. Vertex positions live in lattice units (node (i, j, k) at
 // (i, j, k)), where the immersed boundary works; the membrane works in um and pN, so each step
 // converts once each way. The driver (coupled_simulation.hpp) calls the phases in order.
 //

@@ -1,4 +1,4 @@
-// Checkpoint files of a coupled simulation (DESIGN.md §6: long runs checkpoint and resume).
+// Checkpoint files of a coupled simulation (docs/architecture.md: long runs checkpoint and resume).
 //
 // Layout (little-endian, as in memory on the machines rbcsim runs on):
 //   "RBCSIMCK"                       8 bytes, the magic

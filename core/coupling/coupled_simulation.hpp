@@ -1,5 +1,5 @@
-// The coupled lattice Boltzmann - immersed boundary - membrane time loop (DESIGN.md §3.3) for a
-// list of cells (one now, many later). One step:
+// The coupled lattice Boltzmann - immersed boundary - membrane time loop (docs/architecture.md) for
+// a list of cells (one now, many later). One step:
 //   1. membrane forces at the current vertex positions, plus the external-force hooks (tweezers);
 //   2. pN -> lattice force, one interpolation stencil per cell, spread onto the force density
 //      (the sum of the spread forces equals the sum of the vertex forces);
@@ -9,9 +9,9 @@
 //   6. stability checks (stability.hpp), then the observers that are due.
 // Every phase is deterministic, so results do not depend on the number of OpenMP threads.
 //
-// An instability stops the run (DESIGN.md §6): if a run directory is set, a dump (membrane .vtp
-// of every cell, fluid .vti, failure.json) is written to <run directory>/failure/, then
-// RuntimeFailure("step N, cell K: reason; dump written to DIR") is thrown (exit code 1).
+// An instability stops the run (docs/physics.md, "Failures"): if a run directory is set, a dump
+// (membrane .vtp of every cell, fluid .vti, failure.json) is written to <run directory>/failure/,
+// then RuntimeFailure("step N, cell K: reason; dump written to DIR") is thrown (exit code 1).
 #pragma once
 
 #include <chrono>

@@ -1,4 +1,4 @@
-// ParaView output of a coupled simulation (DESIGN.md §1 "Outputs of a run directory"), written
+// ParaView output of a coupled simulation (docs/architecture.md, "Output files"), written
 // atomically through core/io:
 //   membrane  VTK PolyData (.vtp), positions in um, per-vertex arrays
 //               force_<term>_pN     each enabled membrane term (unclamped)

@@ -1,6 +1,6 @@
-// The instability checks of the coupled step (DESIGN.md §6). Each is cheap (one pass over a
-// cell's vertices) so the driver runs them every step; each returns a one-line description of the
-// first problem found, for the "step N, cell K: ..." failure message, or nothing.
+// The instability checks of the coupled step (docs/physics.md, "Failures"). Each is cheap (one pass
+// over a cell's vertices) so the driver runs them every step; each returns a one-line description
+// of the first problem found, for the "step N, cell K: ..." failure message, or nothing.
 #pragma once
 
 #include <cstddef>
@@ -16,7 +16,7 @@
 namespace rbcsim::coupling {
 
 struct StabilityLimits {
-  // Largest displacement of a vertex in one step: half a spacing (DESIGN.md §6). Beyond it the
+  // Largest displacement of a vertex in one step: half a spacing (docs/physics.md). Beyond it the
   // stencils of consecutive steps barely overlap and the vertex no longer follows the flow.
   double max_vertex_step_lu = 0.5;
   // A step is "capped" for a cell when more than this fraction of its vertices hit the membrane's

@@ -1,6 +1,6 @@
-// When a coupled run stops (DESIGN.md §4: "run to a steady state"): a physical time, a distance
-// travelled by a cell, or the steady state of an observable. A run stops at the first criterion
-// that holds, and reports its reason.
+// When a coupled run stops (docs/physics.md: runs go to a steady state): a physical time, a
+// distance travelled by a cell, or the steady state of an observable. A run stops at the first
+// criterion that holds, and reports its reason.
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 // A circular tube along x with one smooth axisymmetric constriction: the non-uniform (stenosed)
-// capillary of the paper's §3.3 and §3.4 (DESIGN.md §4, capillary).
+// capillary of the paper's §3.3 and §3.4 (docs/physics.md, "Capillary").
 //
 // Over the constriction, of length L_c centred on x_c, let s = (x - x_c) / (L_c / 2) in [-1, 1].
 // The lumen diameter is

@@ -1,5 +1,5 @@
 // Two parallel plates normal to y at y = -gap/2 and y = +gap/2: the walls of the moving-wall
-// (Couette) shear set-up (DESIGN.md §4, shear). Flow along x, velocity gradient along y,
+// (Couette) shear set-up (docs/physics.md, "Shear"). Flow along x, velocity gradient along y,
 // vorticity along z; x and z are open (periodic).
 #pragma once
 

@@ -1,7 +1,7 @@
 // The Eulerian lattice as the geometry module sees it: a box of nx * ny * nz nodes, spacing dx_um.
 //
 // Node-centred convention: node (i, j, k) sits AT origin_um + (i, j, k) * dx_um (it is not the
-// corner of a cell). With half-way bounce-back (DESIGN.md §3.2) a wall lies halfway between a
+// corner of a cell). With half-way bounce-back (docs/physics.md) a wall lies halfway between a
 // fluid node and its solid neighbour, so each fluid node owns the cube of side dx centred on it
 // and a channel of n fluid nodes across is n * dx wide.
 //

@@ -2,9 +2,9 @@
 // and the mask: lattice_grid.hpp).
 //
 // A node is solid exactly when its position lies outside the fluid. Half-way bounce-back
-// (DESIGN.md §3.2) then puts the effective wall halfway between each fluid node and its solid
-// neighbour: the staircase of the faces of the cubes (side dx) centred on the fluid nodes, not the
-// geometric surface. The two agree only where the surface falls halfway between two nodes
+// (docs/physics.md, "Fluid") then puts the effective wall halfway between each fluid node and its
+// solid neighbour: the staircase of the faces of the cubes (side dx) centred on the fluid nodes,
+// not the geometric surface. The two agree only where the surface falls halfway between two nodes
 // (lattice_around arranges that for the plates of a channel whose gap is a multiple of dx);
 // elsewhere they differ by up to dx / 2 along a lattice axis. wall_measures.hpp measures the
 // effective section (area, radius, gap) that flow tests must compare with.

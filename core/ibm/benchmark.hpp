@@ -1,5 +1,5 @@
-// Timing of the immersed-boundary part of one coupled step, for `rbcsim bench` (DESIGN.md §5):
-// measure, don't assert.
+// Timing of the immersed-boundary part of one coupled step, for `rbcsim bench`
+// (docs/performance.md): measure, don't assert.
 #pragma once
 
 #include <cstddef>

@@ -1,4 +1,4 @@
-// Discrete delta functions of the immersed boundary method (DESIGN.md §3.3), registered by name in
+// Discrete delta functions of the immersed boundary method (docs/physics.md), registered by name in
 // one table ("ibm.kernel": "phi2" | "phi3" | "phi4"). Each is given by its 1D weight phi(r) of the
 // offset r = point - node (in lattice spacings) and its support width (nodes per axis); the 3D
 // weight is the product phi(rx) phi(ry) phi(rz). With dx = 1 a weight is already per unit volume.

@@ -1,7 +1,7 @@
 // How the immersed-boundary kernels see the lattice: a box of nx * ny * nz nodes, node (i, j, k) at
 // the position (i, j, k) in lattice spacings, stored at index i + nx * (j + ny * k) in every
 // per-node array (force density, velocity, solid mask). The IBM works on such plain arrays so that
-// it plugs onto the lattice solver's fields whatever their storage (DESIGN.md §2, §3.3).
+// it plugs onto the lattice solver's fields whatever their storage (docs/architecture.md).
 #pragma once
 
 #include <cstddef>

@@ -1,7 +1,7 @@
 // The nodes and weights that couple each Lagrangian point (membrane vertex) to the lattice,
-// computed ONCE per step and shared by force spreading and velocity interpolation (DESIGN.md
-// §3.3 steps 2 and 4, §5), so both use the same operator and spreading is the adjoint of
-// interpolation.
+// computed ONCE per step and shared by force spreading and velocity interpolation
+// (docs/architecture.md, one coupled step: steps 2 and 4), so both use the same operator and
+// spreading is the adjoint of interpolation.
 //
 // Positions are in lattice spacings, node (i, j, k) at (i, j, k) (see grid_view.hpp). A point's
 // nodes are the support_width^3 box its kernel reaches, less:

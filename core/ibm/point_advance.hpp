@@ -1,4 +1,4 @@
-// Moving the Lagrangian points with the interpolated fluid velocity (DESIGN.md §3.3 step 5):
+// Moving the Lagrangian points with the interpolated fluid velocity (docs/architecture.md, step 5):
 // massless vertices, dx/dt = u(x). Schemes are registered by name in one table
 // ("ibm.point_advance": "euler" | "ab2"). Positions, velocities and dt in lattice units.
 #pragma once

@@ -1,7 +1,7 @@
-// The plain reference of spreading and interpolation (DESIGN.md §2: every hot kernel keeps one):
-// serial loops over each point's support box that evaluate the kernel on the fly, with the same
-// rules as InterpolationStencil (periodic wrap, nodes outside a non-periodic grid and solid nodes
-// dropped, the rest renormalised to sum 1). The optimised stencil path is tested against it.
+// The plain reference of spreading and interpolation (docs/architecture.md: every hot kernel keeps
+// one): serial loops over each point's support box that evaluate the kernel on the fly, with the
+// same rules as InterpolationStencil (periodic wrap, nodes outside a non-periodic grid and solid
+// nodes dropped, the rest renormalised to sum 1). The optimised stencil path is tested against it.
 // Throws RuntimeFailure for a point with no fluid node in reach.
 #pragma once
 

@@ -1,6 +1,6 @@
-// Force spreading and velocity interpolation through a prebuilt InterpolationStencil (DESIGN.md
-// §3.3 steps 2 and 4), on the lattice's plain per-node arrays in lattice units. With the same
-// stencil, spreading is the exact adjoint of interpolation:
+// Force spreading and velocity interpolation through a prebuilt InterpolationStencil
+// (docs/architecture.md, one coupled step: steps 2 and 4), on the lattice's plain per-node arrays
+// in lattice units. With the same stencil, spreading is the exact adjoint of interpolation:
 //   sum_nodes u . (S F) = sum_points (I u) . F.
 // Both throw std::invalid_argument when the stencil was built for another grid or another
 // number of points.

@@ -1,6 +1,6 @@
 // Every output file of rbcsim is written through here: the content goes to a temporary file in
 // the same directory, is flushed, and is renamed over the target only when complete. A run that
-// is killed therefore never leaves a half-written result behind (DESIGN.md §6).
+// is killed therefore never leaves a half-written result behind (docs/architecture.md).
 #pragma once
 
 #include <filesystem>

@@ -1,4 +1,5 @@
-// Throughput of the fluid kernels, for `rbcsim bench` (DESIGN.md §5). Measures, never asserts.
+// Throughput of the fluid kernels, for `rbcsim bench` (docs/performance.md). Measures, never
+// asserts.
 #pragma once
 
 #include <cstddef>

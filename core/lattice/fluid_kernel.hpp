@@ -32,7 +32,7 @@ enum class PopulationLayout {
 // odd number of 64-byte cache lines. The kernels stream all 19 arrays side by side; at a stride
 // that is a multiple of a large power of two (128^3 nodes: exactly 16 MiB) they all fall on the
 // same cache sets and evict each other (measured: 128^3 ran at 30-32 MLUPS on one core, 130^3 at
-// 70-72; README "rbcsim bench"). With an odd number of lines the 19 arrays take distinct sets.
+// 70-72; docs/performance.md). With an odd number of lines the 19 arrays take distinct sets.
 std::size_t population_stride(std::size_t node_count);
 
 struct FluidArrays {

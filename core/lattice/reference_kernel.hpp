@@ -1,6 +1,6 @@
 // The plain reference kernel: collide every fluid node, then stream into a second array, with
 // readable loops over the velocity set. It stays forever as the yardstick of the optimised kernel
-// (DESIGN.md §2); keep it simple rather than fast.
+// (docs/architecture.md); keep it simple rather than fast.
 #pragma once
 
 #include "lattice/fluid_kernel.hpp"

@@ -1,4 +1,5 @@
-// Timing of the membrane force kernels, for `rbcsim bench` (DESIGN.md §5: measure, never assert).
+// Timing of the membrane force kernels, for `rbcsim bench` (docs/performance.md: measure, never
+// assert).
 #pragma once
 
 #include <string_view>

@@ -1,4 +1,4 @@
-// The stress-free reference of one cell (DESIGN.md §3.4): every L0, theta0, A0 and the cell's V0,
+// The stress-free reference of one cell (docs/physics.md): every L0, theta0, A0 and the cell's V0,
 // DeltaA0, C0, captured from the initial mesh (the generated or imported shape is stress-free).
 // A plain struct, so a restart can restore it and a test can edit it.
 #pragma once

@@ -20,8 +20,9 @@ namespace rbcsim::mesh {
 
 inline constexpr double kWeldToleranceFraction = 1e-5;
 
-// Size limits checked before anything is read (DESIGN.md §6: a huge file is refused up front).
-// A cell has thousands of triangles (the paper's: 5120); the level-6 built-in shape has 81920.
+// Size limits checked before anything is read (docs/architecture.md: a huge file is refused up
+// front). A cell has thousands of triangles (the paper's: 5120); the level-6 built-in shape has
+// 81920.
 inline constexpr std::size_t kDefaultMaxTriangles = 2'000'000;
 // Peak memory of an import per triangle: assimp's copy (corners, normals, faces), our triangle
 // soup, the welding map and the welded mesh, rounded up.

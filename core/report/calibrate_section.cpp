@@ -1,4 +1,4 @@
-// Patch-test calibration (DESIGN.md §4 calibrate): every measured modulus and fitted stiffness
+// Patch-test calibration (paper §2.3): every measured modulus and fitted stiffness
 // beside the paper's value where result.json gives one.
 #include "report/markup.hpp"
 #include "report/sections.hpp"

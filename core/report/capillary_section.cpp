@@ -1,4 +1,4 @@
-// One cell through a stenosed capillary (DESIGN.md §4 capillary): deformation index against
+// One cell through a stenosed capillary (paper §3.3-3.4): deformation index against
 // time for every morphology (paper Fig. 13), transit times as bars, whether their order is the
 // paper's, and whether F_ad and F_tc lower the peak DI as in the paper's Fig. 13. A run that
 // failed or was interrupted is drawn in the DI plot up to where it stopped (where and how a cell

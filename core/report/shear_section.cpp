@@ -1,4 +1,4 @@
-// One cell in simple shear (DESIGN.md §4 shear): cell length against shear rate per morphology,
+// One cell in simple shear (paper §3.2): cell length against shear rate per morphology,
 // with and without the area-difference and total-curvature terms (the paper's Figs. 9-11), then
 // the deformation index, surface smoothness and roughness of every run, and each sweep as a table.
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Optical-tweezers stretching (DESIGN.md §4 stretch): axial and transverse diameters against
+// Optical-tweezers stretching (paper §3.1, Fig. 8): axial and transverse diameters against
 // force for every run, over the Mills et al. (2004) measurements with their error bars. A curve
 // that stopped (a fluid stretch failing at its ninth force, say) is drawn up to its last force
 // that reached its steady shape, and left out of the comparison: it is not the whole curve.

@@ -31,8 +31,9 @@ double paper_reynolds_number(const std::string& geometry) {
 }
 
 // The time the mean inlet flow takes to cross the fluid box along x. A cell on the axis moves
-// faster than the mean: passing cells need about a third of it at every velocity we ran (README.md,
-// capillary), so as a time limit it stops a stuck cell without cutting a slow run short.
+// faster than the mean: passing cells need about a third of it at every velocity we ran
+// (docs/validation.md, capillary), so as a time limit it stops a stuck cell without cutting a slow
+// run short.
 double mean_flow_crossing_time_s(const CapillaryWall& wall, double mean_inlet_velocity_m_per_s) {
   const auto bounds = wall.shape->fluid_bounds();
   return (bounds.max_um.x() - bounds.min_um.x()) * kMetresPerMicrometre /

@@ -1,6 +1,6 @@
 // The cell a run starts from: the mesh named by mesh.file, or else the built-in shape of the
 // configured morphology at mesh.subdivisions, with the mesh.<shape>.* generator parameters.
-// Either way the returned mesh is the membrane's stress-free reference (DESIGN.md §3.4).
+// Either way the returned mesh is the membrane's stress-free reference (docs/physics.md).
 #pragma once
 
 #include <string>
@@ -34,7 +34,7 @@ CellMesh cell_mesh_from(const config::Config& config);
 void add_resolution_notice(CellMesh& cell, const config::Config& config);
 
 // Membrane edges shorter than this many lattice spacings get a notice (add_edge_spacing_notice).
-// Measured (README.md, `rbcsim capillary`): the paper's 2562-vertex cell with edges of 0.5 dx
+// Measured (docs/validation.md, capillary): the paper's 2562-vertex cell with edges of 0.5 dx
 // fails at the local-area limit in the validation capillary whatever the time step; with edges
 // of ~1 dx (the same cell on dx / 2, or the 642-vertex cell) it passes. The threshold lies between
 // the two; it is not a measured boundary.

@@ -1,4 +1,5 @@
-// The one place that converts between physical SI values and lattice units (DESIGN.md §3.1).
+// The one place that converts between physical SI values and lattice units (docs/physics.md,
+// "Units").
 //
 // Lattice units take the lattice spacing dx, the time step dt and the fluid density rho as 1.
 // dt is not chosen freely: the lattice Boltzmann viscosity nu_lattice = (tau - 1/2)/3 must equal

@@ -2,9 +2,9 @@
 // fit at the paper's resolution (the N = 4 discocyte, all six terms, Table 2 but k_link) against
 // Mills et al. (2004), with the contact patches held rigid as by glued beads. The issue's
 // acceptance figure for the stretch: every Mills point inside its error bars, for both diameters,
-// with parameters from `rbcsim calibrate`. With free patches no k_link does this (README, "Why
-// the transverse diameter misses"): the transverse diameter needs a soft network that the free
-// patch lets overshoot axially.
+// with parameters from `rbcsim calibrate`. With free patches no k_link does this
+// (docs/validation.md, "Why the transverse diameter misses"): the transverse diameter needs a soft
+// network that the free patch lets overshoot axially.
 #include <gtest/gtest.h>
 
 #include <cstdio>

@@ -82,8 +82,8 @@ TEST(CapillaryCase, CellIsCarriedThroughTheThroatAndItsDeformationIndexPeaksTher
   EXPECT_NEAR(run.numbers.reynolds_number, 0.014 * 10.2e-6 / 1.1e-6, 1e-12);
 }
 
-// Why the paper's throat fails (README, "rbcsim capillary"): in the 6.75 um throat the local area
-// term (Eq. 8) at Table 2's weight (here x16, like every k) resists area change only within a
+// Why the paper's throat fails (docs/validation.md, capillary): in the 6.75 um throat the local
+// area term (Eq. 8) at Table 2's weight (here x16, like every k) resists area change only within a
 // sliver of its singular limit |d| = tau_a, narrower than what one explicit step moves a vertex
 // there, so a triangle steps onto the limit. Neither the wall, the vertex cap nor the cell's
 // mirror symmetry is involved: with the area term 16 times stiffer still, it acts before the

@@ -59,8 +59,8 @@ TEST(CapillaryObservables, ACellThatStopsInTheThroatHasEnteredButNotPassed) {
   EXPECT_THROW(NarrowSectionTransit(5.0, 5.0), std::invalid_argument);
 }
 
-// DESIGN.md §4: with plasma (1.1e-6 m^2/s), 0.04 m/s in a 10.2 um tube is Re = 0.37, and the
-// paper's Re = 0.0643 would need nu ~ 6.3e-6 m^2/s.
+// docs/physics.md, "Capillary": with plasma (1.1e-6 m^2/s), 0.04 m/s in a 10.2 um tube is
+// Re = 0.37, and the paper's Re = 0.0643 would need nu ~ 6.3e-6 m^2/s.
 TEST(CapillaryObservables, TheReynoldsNumbersOfThePaperFlows) {
   EXPECT_NEAR(reynolds_number(0.04, 10.2, 1.1e-6), 0.04 * 10.2e-6 / 1.1e-6, 1e-12);
   EXPECT_NEAR(reynolds_number(0.04, 10.2, 1.1e-6), 0.371, 1e-3);

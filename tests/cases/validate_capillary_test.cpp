@@ -4,9 +4,9 @@
 // The paper's own pairing (the 2562-vertex cell, 0.25 um edges, on dx = 0.5 um) at the default
 // velocity (the paper's Reynolds number with plasma, 6.93e-3 m/s, Ca 1.04) fails: a triangle
 // reaches the local-area limit after 0.29 ms, at the same simulated time whatever the time step
-// (README.md, capillary); with edges ~dx the same cell passes. At the "natural" 5e-4 m/s of the
-// paper's §3.4 (Ca 0.075) the paper's pairing passes too; at its lower end, 1e-4 m/s (Ca 0.015),
-// the DI peaks where the paper's does.
+// (docs/validation.md, capillary); with edges ~dx the same cell passes. At the "natural" 5e-4 m/s
+// of the paper's §3.4 (Ca 0.075) the paper's pairing passes too; at its lower end, 1e-4 m/s (Ca
+// 0.015), the DI peaks where the paper's does.
 // The paper's results: every cell passes; the DI peaks in the narrow section and falls back after
 // it; transit time discocyte < echinocyte III < stomatocyte II.
 #include <gtest/gtest.h>
@@ -69,8 +69,8 @@ TEST(ValidateCapillary, PapersPairingPassesTheValidationCapillaryAtTheNaturalVel
 
 // The paper's DI curve (§3.3, Fig. 13): a peak of "around 1.45" in the narrow section and, once
 // the cell has left it, "approximately" the inlet value. The peak falls with the capillary number
-// (README.md, capillary: 2.07 at the Reynolds-derived 6.93e-3 m/s, 1.64 at 5e-4, 1.43 at 1e-4)
-// and reaches the paper's at the lower end of §3.4's natural 1e-4 to 5e-4 m/s, Ca 0.015. The
+// (docs/validation.md, capillary: 2.07 at the Reynolds-derived 6.93e-3 m/s, 1.64 at 5e-4, 1.43 at
+// 1e-4) and reaches the paper's at the lower end of §3.4's natural 1e-4 to 5e-4 m/s, Ca 0.015. The
 // 642-vertex cell (edges ~dx, Table 2's moduli as in the three-morphology test below) stands in for
 // the paper's 2562-vertex one, which at this velocity would take ~2 CPU-hours: the two agree to
 // 1.3 % in peak DI at Ca 1.04 and 1.1 % at Ca 0.075. The tolerance, 0.05, is how precisely the

@@ -4,10 +4,10 @@
 // on the quasi-static equilibria (the same physics); prints the curve, its distance from the
 // measurements, steps and wall time.
 //
-// Measured (README "rbcsim stretch"): at the paper's pairing (2562 vertices, 0.25 um edges on
-// dx = 0.5 um) each force takes 129k-285k steps and the run fails at 108.9 pN, the 9th force, at
-// the local-area limit after 1.5 h on one thread: edges half a spacing long do not hold in
-// sustained flow (as in the capillary). With edges about one spacing (642 vertices on
+// Measured (docs/validation.md, "Fluid-coupled curves"): at the paper's pairing (2562 vertices,
+// 0.25 um edges on dx = 0.5 um) each force takes 129k-285k steps and the run fails at 108.9 pN, the
+// 9th force, at the local-area limit after 1.5 h on one thread: edges half a spacing long do not
+// hold in sustained flow (as in the capillary). With edges about one spacing (642 vertices on
 // dx = 0.75 um) the curve reaches all 13 forces: 1.07 M steps, 463 s on one thread.
 #include <gtest/gtest.h>
 

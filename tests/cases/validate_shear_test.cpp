@@ -2,7 +2,7 @@
 // tests/CMakeLists.txt; not in the default suite): the paper's Figs. 9-11 sweep, rates 0 to 2000
 // 1/s, each morphology with all six terms and without area_difference and total_curvature, with
 // membrane edges about one lattice spacing long (642 vertices on dx = 0.5 um, k_link and k_area
-// doubled: Table 2's moduli for these edges; README, rbcsim shear) and the default periodic
+// doubled: Table 2's moduli for these edges; docs/validation.md, shear) and the default periodic
 // steady-state criterion (lengths are means over one swinging period). Asserts what must hold
 // whatever the parameters (the cell at rest keeps its diameter; the discocyte's mean length grows
 // with the rate; with all six terms no rate fails); prints length, its swing, deformation index,
@@ -88,7 +88,7 @@ TEST_P(ValidateShear, LengthAgainstShearRate) {
 
 // The viscosity trick: 1000 1/s at Re 0.1 (viscosity / 2.7, 7x fewer steps) and at the physical
 // viscosity (Re 0.014) give the same shape after the same strain; measured: length 8.1265 and
-// 8.1261 um, DI 0.407 and 0.406, smoothness 0.1409 both (4 strains, README).
+// 8.1261 um, DI 0.407 and 0.406, smoothness 0.1409 both (4 strains, docs/validation.md).
 TEST(ValidateShearTrick, ScaledViscosityGivesTheSameShape) {
   const auto config = rbcsim::config::resolve_config(
       {.assignments = {"mesh.subdivisions=3", "lattice.spacing_um=0.75", "membrane.k_link_kBT=14",

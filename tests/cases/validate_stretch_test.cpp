@@ -2,9 +2,9 @@
 // tests/CMakeLists.txt; not in the default suite): the paper's resolution, the
 // 13 forces of Mills et al. (2004), with all six terms and without area_difference and
 // total_curvature (the paper's Fig. 8 comparison), with free contact patches (the default) and
-// with patches held rigid as by a glued bead (README "rbcsim stretch", issue #4). Asserts what must
-// hold whatever the parameters; prints the curve and its distance from the measurements, which is a
-// finding, not a pass/fail bound (the parameters are Table 2's, not fitted here).
+// with patches held rigid as by a glued bead (docs/validation.md, stretch; issue #4). Asserts what
+// must hold whatever the parameters; prints the curve and its distance from the measurements, which
+// is a finding, not a pass/fail bound (the parameters are Table 2's, not fitted here).
 #include <gtest/gtest.h>
 
 #include <chrono>

@@ -1,5 +1,6 @@
-// Loud failures (DESIGN.md §6): each instability stops the run with a RuntimeFailure (exit code
-// 1) naming the step and the cell, after a dump for diagnosis; and the checks themselves.
+// Loud failures (docs/physics.md, "Failures"): each instability stops the run with a RuntimeFailure
+// (exit code 1) naming the step and the cell, after a dump for diagnosis; and the checks
+// themselves.
 #include <gtest/gtest.h>
 
 #include <algorithm>

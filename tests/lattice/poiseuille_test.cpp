@@ -1,5 +1,5 @@
 // Body-force-driven Poiseuille flow between half-way bounce-back walls and in a voxelised tube,
-// against the analytic profiles (DESIGN.md §3.2).
+// against the analytic profiles (docs/validation.md, "Fluid solver").
 #include "flow_helpers.hpp"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
-// The optimised membrane kernel against the reference kernel (DESIGN.md §2: every optimised
-// kernel is tested for equivalence with the plain one): every subset of the six terms, both
-// distributions, two random deformations of the test shapes. Also what the optimised kernel
+// The optimised membrane kernel against the reference kernel (docs/architecture.md: every
+// optimised kernel is tested for equivalence with the plain one): every subset of the six terms,
+// both distributions, two random deformations of the test shapes. Also what the optimised kernel
 // promises beyond equal forces: the two levels of detail, the same limit errors, an atan2 as
 // accurate as the library's, and the benchmark helper.
 #include <gtest/gtest.h>

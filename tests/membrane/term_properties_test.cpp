@@ -1,4 +1,4 @@
-// Properties every membrane force term must have (DESIGN.md §3.4), for every term, both
+// Properties every membrane force term must have (docs/physics.md), for every term, both
 // distributions and every test shape, at a random small deformation (fixed seeds).
 #include <gtest/gtest.h>
 
@@ -258,7 +258,8 @@ TEST_P(GradientForm, MatchesFiniteDifferenceOfTheEnergy) {
 
 INSTANTIATE_TEST_SUITE_P(AllTerms, GradientForm, cases({"gradient"}), term_case_name);
 
-// The residual torque of the `paper` angle terms (DESIGN.md: measured and reported, not zero).
+// The residual torque of the `paper` angle terms (docs/physics.md: measured and reported, not
+// zero).
 TEST(PaperDistribution, ResidualTorqueIsMeasured) {
   std::printf("%-12s %-16s %14s %14s %16s\n", "shape", "term", "torque pN um", "torque ratio",
               "gradient ratio");

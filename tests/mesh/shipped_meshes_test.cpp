@@ -1,4 +1,4 @@
-// The meshes shipped in meshes/ must be what the generators make today (DESIGN.md §2): each is
+// The meshes shipped in meshes/ must be what the generators make today (meshes/README.md): each is
 // regenerated and compared corner by corner, and the manifest's statistics must match.
 #include <gtest/gtest.h>
 

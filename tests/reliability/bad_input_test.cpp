@@ -1,6 +1,7 @@
-// The bad-input matrix of DESIGN.md §6 through the built binary: every defective mesh or config
-// gives exit code 2, exactly one line on stderr that names the file and the problem, and leaves no
-// output file or run directory behind. The bad files are generated here, small, from an octahedron.
+// The bad-input matrix (docs/architecture.md) through the built binary: every defective mesh or
+// config gives exit code 2, exactly one line on stderr that names the file and the problem, and
+// leaves no output file or run directory behind. The bad files are generated here, small, from an
+// octahedron.
 #include <gtest/gtest.h>
 
 #include <cstdint>

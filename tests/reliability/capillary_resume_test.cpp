@@ -1,4 +1,4 @@
-// Checkpoint and resume of the capillary experiment (DESIGN.md §6): a run interrupted after
+// Checkpoint and resume of the capillary experiment (docs/architecture.md): a run interrupted after
 // kCapillaryInterruptStep steps, then resumed from its checkpoint, ends with the straight run's
 // samples, deformation record and step counts bit for bit (although the interrupted run's observers
 // saw a state between two sample intervals), also through the binary with --checkpoint-every and

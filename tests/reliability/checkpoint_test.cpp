@@ -1,7 +1,7 @@
-// Checkpoint and resume of the coupled loop (DESIGN.md §6): N steps straight and N/2 + checkpoint
-// + a new simulation resumed for N/2 give bit-identical positions and populations, with 1 and 2
-// threads; a checkpoint of another setup, config or a damaged file is refused with one line; an
-// interrupted run writes a checkpoint.
+// Checkpoint and resume of the coupled loop (docs/architecture.md): N steps straight and N/2 +
+// checkpoint + a new simulation resumed for N/2 give bit-identical positions and populations, with
+// 1 and 2 threads; a checkpoint of another setup, config or a damaged file is refused with one
+// line; an interrupted run writes a checkpoint.
 #include <gtest/gtest.h>
 
 #include <csignal>

@@ -1,5 +1,5 @@
-// "Cell larger than the domain" (DESIGN.md §6) as the pure check the experiment commands call
-// before they build a simulation.
+// "Cell larger than the domain" (docs/architecture.md) as the pure check the experiment commands
+// call before they build a simulation.
 #include <gtest/gtest.h>
 
 #include <string>

@@ -1,6 +1,6 @@
-// Ctrl-C (DESIGN.md §6): the time loops stop at the next iteration once the interrupt flag is set,
-// the stretch keeps the points it reached, and `rbcsim stretch` killed with SIGINT exits 130 with
-// a result.json of status "interrupted" and no half-written file.
+// Ctrl-C (docs/architecture.md): the time loops stop at the next iteration once the interrupt flag
+// is set, the stretch keeps the points it reached, and `rbcsim stretch` killed with SIGINT exits
+// 130 with a result.json of status "interrupted" and no half-written file.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>

@@ -1,10 +1,10 @@
 // SIGKILL leaves a program no chance to clean up, so what a killed run leaves must already be
-// whole (DESIGN.md §6): every file is written to a temporary sibling (".<name>.tmp<random>") and
-// renamed, so a file with its final name is always complete. The mechanism's own test
-// (AtomicFile.KilledMidWrite..., tests/io) kills a process inside a write; this one kills the
-// whole command while it writes a membrane and a fluid snapshot every step, and checks every file
-// it left under its final name, so an output written around io/atomic_file fails it whenever the
-// kill lands inside that write.
+// whole (docs/architecture.md): every file is written to a temporary sibling
+// (".<name>.tmp<random>") and renamed, so a file with its final name is always complete. The
+// mechanism's own test (AtomicFile.KilledMidWrite..., tests/io) kills a process inside a write;
+// this one kills the whole command while it writes a membrane and a fluid snapshot every step, and
+// checks every file it left under its final name, so an output written around io/atomic_file fails
+// it whenever the kill lands inside that write.
 #include <gtest/gtest.h>
 
 #include <filesystem>

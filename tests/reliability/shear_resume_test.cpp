@@ -1,4 +1,4 @@
-// Checkpoint and resume of the shear sweep (DESIGN.md §6): each rate checkpoints in its own
+// Checkpoint and resume of the shear sweep (docs/architecture.md): each rate checkpoints in its own
 // rate_<i>/ directory; a sweep interrupted in the middle of a rate reports the rates done so far
 // and the interrupted ones as such; resumed, the finished rates are kept and the interrupted one
 // continues from its checkpoint to the straight run's point, bit for bit (the tank-treading record

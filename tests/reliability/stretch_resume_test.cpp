@@ -1,5 +1,5 @@
-// Checkpoint and resume of the fluid-coupled stretch (DESIGN.md §6): one simulation across all
-// forces, the curve's progress (force index, ramp, start record, points so far) riding in its
+// Checkpoint and resume of the fluid-coupled stretch (docs/architecture.md): one simulation across
+// all forces, the curve's progress (force index, ramp, start record, points so far) riding in its
 // checkpoint. A run interrupted in the middle of a force reports the forces done; resumed from its
 // checkpoint it ends with the straight run's result.json "stretch" object and stretch.csv, bit for
 // bit (the wall times aside: they measure the machine). Also through the binary: --resume,

@@ -1,5 +1,5 @@
-// Results do not depend on the number of threads (DESIGN.md §6), 1 and 2 OpenMP threads bit for
-// bit. Every parallel code path has its test:
+// Results do not depend on the number of threads (docs/architecture.md), 1 and 2 OpenMP threads bit
+// for bit. Every parallel code path has its test:
 //   LBM sweep, both kernels, every boundary: tests/lattice/kernel_equivalence_test.cpp
 //     (KernelEquivalence.OneAndTwoThreadsAreBitIdentical; populations, moments, total mass);
 //   membrane forces, both kernels (1, 2, 3 threads): tests/membrane/analytic_checks_test.cpp

@@ -18,7 +18,7 @@ TEST(CouplingFromConfig, DefaultsAndOverridesReachTheStructs) {
   const auto defaults = rbcsim::setup::coupling_parameters_from(resolve_config(), "run");
   EXPECT_EQ(defaults.kernel, "phi2");
   EXPECT_EQ(defaults.point_advance, "euler");
-  EXPECT_DOUBLE_EQ(defaults.stability.max_vertex_step_lu, 0.5);  // DESIGN.md §6: half a spacing
+  EXPECT_DOUBLE_EQ(defaults.stability.max_vertex_step_lu, 0.5);  // half a spacing (docs/physics.md)
   EXPECT_EQ(defaults.run_directory, "run");
 
   const auto config = resolve_config(

@@ -16,7 +16,7 @@ using rbcsim::units::PhysicalUnit;
 using rbcsim::units::UnitConverter;
 
 constexpr double kNotANumber = std::numeric_limits<double>::quiet_NaN();
-// DESIGN.md §3.1: dx = 0.5 um, tau = 1, HemoCell's plasma.
+// docs/physics.md, "Units": dx = 0.5 um, tau = 1, HemoCell's plasma.
 constexpr LatticeParameters kPlasma{0.5, 1.0, 1025.0, 1.1e-6};
 // By hand: dt = (tau - 1/2)/3 * dx^2 / nu = (1/6) * (5e-7 m)^2 / 1.1e-6 m^2/s = 3.7879e-8 s.
 constexpr double kHandTimeStep_s = (0.5 / 3.0) * 2.5e-13 / 1.1e-6;

@@ -3,7 +3,7 @@
 namespace rbcsim::config {
 
 void add_physics_options(OptionTable& table) {
-  // HemoCell's plasma values (DESIGN.md §3.1) and the paper's kBT (Table 2).
+  // HemoCell's plasma values (docs/physics.md, "Units") and the paper's kBT (Table 2).
   table.add_number("physics.plasma_density_kg_per_m3", "kg/m^3", 1025.0, "Density of the plasma.")
       .above(0.0);
   table

@@ -9,8 +9,8 @@ const coupling::StabilityLimits kStabilityDefaults{};
 
 }  // namespace
 
-// DESIGN.md §6: an instability stops the run (exit code 1) with a diagnosis dump; these set what
-// counts as one.
+// docs/physics.md, "Failures": an instability stops the run (exit code 1) with a diagnosis dump;
+// these set what counts as one.
 void add_stability_options(OptionTable& table) {
   table
       .add_number("stability.max_vertex_step_dx", "dx", kStabilityDefaults.max_vertex_step_lu,

@@ -50,7 +50,7 @@ void add_quasi_static_options(OptionTable& table) {
 void add_fluid_options(OptionTable& table) {
   const auto& fluid = kStretchDefaults.fluid;
   // Plasma's by default: the equilibrium does not depend on it and the steps to reach it grow as
-  // nu^2, but a third of it already went unstable at 50 pN (core/cases/README.md).
+  // nu^2, but a third of it already went unstable at 50 pN (docs/validation.md, stretch).
   table
       .add_number("stretch.fluid.kinematic_viscosity_m2_per_s", "m^2/s",
                   fluid.lattice.kinematic_viscosity_m2_per_s,
