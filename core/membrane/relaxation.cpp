@@ -7,36 +7,14 @@
 #include <vector>
 
 #include "common/interrupt.hpp"
+#include "minimise/stiffness.hpp"
 
 namespace rbcsim::membrane {
 namespace {
 
-constexpr int kPowerIterations = 30;
 // Finite-difference displacement of the power iteration, relative to the mean edge length:
 // small enough to stay linear, large enough for round-off (forces ~1 pN, stiffness ~10-100 pN/um).
 constexpr double kProbeFraction = 1e-6;
-
-// A fixed pseudo-random start vector (splitmix64), so the estimate is reproducible.
-std::vector<Vec3> start_direction(std::size_t count) {
-  std::uint64_t state = 0x9E3779B97F4A7C15ull;
-  auto next = [&state] {
-    state += 0x9E3779B97F4A7C15ull;
-    std::uint64_t z = state;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return static_cast<double>(z >> 11) / 9007199254740992.0 * 2.0 - 1.0;
-  };
-  std::vector<Vec3> direction(count);
-  for (auto& component : direction) component = Vec3(next(), next(), next());
-  return direction;
-}
-
-double norm(std::span<const Vec3> vectors) {
-  double sum = 0.0;
-  for (const auto& v : vectors) sum += v.squaredNorm();
-  return std::sqrt(sum);
-}
 
 double max_norm(std::span<const Vec3> vectors) {
   double largest = 0.0;
@@ -54,28 +32,14 @@ double mean_reference_edge_um(const ReferenceState& reference) {
 
 double estimate_stiffest_mode_pN_per_um(const MembraneModel& model,
                                         std::span<const Vec3> positions_um) {
-  const auto count = model.vertex_count();
   auto workspace = model.make_workspace();
   auto forces = model.make_forces();
-  model.compute(positions_um, workspace, forces, ForceDetail::totals);
-  const std::vector<Vec3> base_pN = forces.total_pN;
-
-  auto direction = start_direction(count);
-  std::vector<Vec3> probe_um(count);
-  const double probe_um_scale = kProbeFraction * mean_reference_edge_um(model.reference());
-  double stiffness_pN_per_um = 0.0;
-  for (int iteration = 0; iteration < kPowerIterations; ++iteration) {
-    const double length = norm(direction);
-    for (auto& v : direction) v /= length;
-    const double step_um = probe_um_scale / max_norm(direction);
-    for (std::size_t i = 0; i < count; ++i) probe_um[i] = positions_um[i] + step_um * direction[i];
-    model.compute(probe_um, workspace, forces, ForceDetail::totals);
-    for (std::size_t i = 0; i < count; ++i) {
-      direction[i] = (forces.total_pN[i] - base_pN[i]) / step_um;
-    }
-    stiffness_pN_per_um = norm(direction);
-  }
-  return stiffness_pN_per_um;
+  return minimise::estimate_stiffest_mode(
+      [&](std::span<const Vec3> positions, std::span<Vec3> total_pN) {
+        model.compute(positions, workspace, forces, ForceDetail::totals);
+        std::copy(forces.total_pN.begin(), forces.total_pN.end(), total_pN.begin());
+      },
+      positions_um, kProbeFraction * mean_reference_edge_um(model.reference()));
 }
 
 void share_force_within_rigid_groups(std::span<const std::vector<std::int32_t>> groups,
