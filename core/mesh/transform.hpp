@@ -18,6 +18,10 @@ void scale_to_volume(TriangleMesh& mesh, double target_volume_um3);
 
 void translate_centroid_to_origin(TriangleMesh& mesh);
 
+// Rounds every coordinate to the nearest single-precision value, as a binary STL stores it, so
+// that a mesh written and read back is the mesh that was written.
+void round_to_single_precision(TriangleMesh& mesh);
+
 // Principal axes of the vertex cloud: columns are unit axes ordered by decreasing variance,
 // forming a right-handed frame (determinant +1).
 Eigen::Matrix3d principal_axes(const TriangleMesh& mesh);

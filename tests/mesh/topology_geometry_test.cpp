@@ -9,6 +9,7 @@
 
 #include "mesh/geometry.hpp"
 #include "mesh/topology.hpp"
+#include "mesh/transform.hpp"
 #include "mesh_test_support.hpp"
 
 namespace {
@@ -135,6 +136,26 @@ TEST(Geometry, ReducedVolumeOfSphereIsOne) {
   const double area = 4.0 * std::numbers::pi * radius * radius;
   const double volume = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
   EXPECT_NEAR(rbcsim::mesh::reduced_volume(area, volume), 1.0, 1e-14);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(Transform, RoundingToSinglePrecisionRoundsEveryCoordinate) {
+  // 162 points with coordinates no float holds exactly; GCC 12.2 at -O2 vectorises the plain
+  // `p[a] = static_cast<float>(p[a])` loop into one that keeps x and y unrounded.
+  rbcsim::mesh::TriangleMesh mesh;
+  for (int i = 0; i < 162; ++i) {
+    mesh.positions_um.emplace_back(0.1 * i + 1e-9, 0.3 * i + 1e-10, 0.7 / (i + 1));
+  }
+  rbcsim::mesh::round_to_single_precision(mesh);
+  for (const auto& p : mesh.positions_um) {
+    for (int axis = 0; axis < 3; ++axis) {
+      volatile float as_float = static_cast<float>(p[axis]);
+      EXPECT_EQ(static_cast<double>(as_float), p[axis]);
+    }
+  }
 }
 
 }  // namespace
