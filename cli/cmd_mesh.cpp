@@ -1,4 +1,5 @@
 // rbcsim mesh generate | import | info: build a cell mesh, read and check one, or describe one.
+#include <unistd.h>
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -6,22 +7,29 @@
 #include <string>
 
 #include "command_registry.hpp"
+#include "common/format.hpp"
 #include "common_options.hpp"
+#include "config/option_table.hpp"
 #include "mesh/cell_shapes.hpp"
 #include "mesh/import.hpp"
 #include "mesh/inspection.hpp"
 #include "mesh/stl_writer.hpp"
 #include "setup/cell_from_config.hpp"
+#include "shapes/sequence.hpp"
+#include "shapes/shape_report.hpp"
 
 namespace rbcsim::cli::mesh_command {
 namespace {
 
 struct GenerateOptions {
-  config::ConfigRequest config;      // --config/--set carry the mesh.<shape>.* generator parameters
-  std::optional<std::string> shape;  // default: the config's morphology
-  std::optional<int> subdivisions;   // default: the config's mesh.subdivisions
+  config::ConfigRequest config;  // --config/--set carry mesh.method, mesh.energy.*, mesh.<shape>.*
+  std::optional<std::string> shape;   // default: the config's morphology
+  std::optional<int> subdivisions;    // mesh.subdivisions
+  std::optional<std::string> method;  // mesh.method
+  bool fresh = false;                 // minimise even when a shipped shape has these settings
   std::string output;
   bool json = false;
+  bool quiet = false;
 };
 
 struct ImportCommandOptions {
@@ -53,19 +61,54 @@ void print_report(const mesh::MeshReport& report, bool json, nlohmann::ordered_j
   std::cout << mesh::to_text(report);
 }
 
+// Progress of a minimisation on a terminal (stderr), one overwritten line.
+shapes::EnergyShapeProgress minimisation_progress(const GenerateOptions& options, int trials) {
+  if (options.quiet || isatty(STDERR_FILENO) != 1) return {};
+  return [trials](int trial, int stage, const minimise::FireResult& so_far) {
+    std::cerr << "\r\033[Kminimising: trial " << trial + 1 << "/" << trials << ", stage "
+              << stage + 1 << ", iteration " << so_far.iterations << ", largest force "
+              << format_significant(so_far.max_force, 3) << " pN" << std::flush;
+  };
+}
+
 void run_generate(const GenerateOptions& options) {
-  const auto config = config::resolve_config(options.config);
-  const auto shape = options.shape.value_or(config.string("morphology"));
-  const auto subdivisions = options.subdivisions.value_or(config.integer("mesh.subdivisions"));
-  const auto parameters = setup::cell_shape_parameters_from(config);
-  const auto cell = mesh::generate_cell(shape, subdivisions, parameters);
-  if (const auto notice = mesh::resolution_notice(shape, subdivisions, parameters, cell)) {
-    std::cerr << "rbcsim: notice: " << *notice << '\n';
+  auto request = options.config;
+  if (options.method) assign_option(request, "--method", "mesh.method", *options.method);
+  if (options.subdivisions) {
+    assign_option(request, "--subdivisions", "mesh.subdivisions",
+                  std::to_string(*options.subdivisions));
   }
-  if (!options.output.empty()) mesh::write_mesh_file(options.output, cell);
-  nlohmann::ordered_json header = {{"shape", shape}, {"subdivisions", subdivisions}};
+  const auto config = config::resolve_config(request);
+  const auto shape = options.shape.value_or(config.string("morphology"));
+  auto settings = setup::named_cell_settings_from(config, shape);
+  settings.use_shipped = !options.fresh;
+  const auto cell = shapes::make_named_cell(
+      shape, options.shape ? "--shape" : "morphology", settings,
+      minimisation_progress(
+          options, settings.energy.trials * static_cast<int>(settings.energy.paths.size())));
+  if (cell.minimised && !options.quiet && isatty(STDERR_FILENO) == 1) std::cerr << '\n';
+  if (settings.method == "parametric") {
+    if (const auto notice =
+            mesh::resolution_notice(shape, settings.subdivisions, settings.parametric, cell.mesh)) {
+      std::cerr << "rbcsim: notice: " << *notice << '\n';
+    }
+  }
+  if (!options.output.empty()) mesh::write_mesh_file(options.output, cell.mesh);
+  nlohmann::ordered_json header = {
+      {"shape", shape}, {"method", settings.method}, {"subdivisions", settings.subdivisions}};
   if (!options.output.empty()) header["output"] = options.output;
-  print_report(mesh::inspect_mesh(cell), options.json, header);
+  if (settings.method == "energy") {
+    header["source"] = cell.minimised ? "minimised" : "shipped";
+    header["settings"] = shapes::to_json(settings.energy);
+    if (cell.minimised) {
+      header["minimisation"] = shapes::minimisation_json(*cell.minimised);
+    } else {
+      header["minimisation"] = cell.shipped_entry.value("minimisation", nlohmann::json());
+    }
+    header["energy"] = shapes::energy_json(cell.mesh, settings.subdivisions, settings.energy);
+  }
+  header["morphology"] = shapes::morphology_json(cell.mesh);
+  print_report(mesh::inspect_mesh(cell.mesh), options.json, header);
 }
 
 void run_import(const ImportCommandOptions& options, const CLI::App& command) {
@@ -96,12 +139,22 @@ void attach_generate(CLI::App& mesh_command) {
   auto* command = mesh_command.add_subcommand(
       "generate", "Build a cell mesh from the icosphere (level 4: 2562 vertices, 5120 triangles)");
   command->add_option("--shape", options->shape,
-                      "Cell shape: " + mesh::cell_shape_names() + " (default: --morphology)");
+                      "Cell shape: with --method energy one of " +
+                          shapes::shape_sequence().joined_names() + "; with parametric one of " +
+                          mesh::cell_shape_names() + " (default: --morphology)");
   command->add_option("--subdivisions", options->subdivisions,
-                      "Icosphere level 0-7 (default: mesh.subdivisions, 4)");
+                      "Icosphere level (mesh.subdivisions; default " +
+                          config::option_table().find("mesh.subdivisions")->default_value.dump() +
+                          ": 2562 vertices)");
+  command->add_option(
+      "--method", options->method,
+      "How the shape is made (mesh.method): " + shapes::shape_methods().described_names());
+  command->add_flag("--fresh", options->fresh,
+                    "Minimise even when a shipped mesh was made with the same settings");
   add_config_options(command, options->config);
   command->add_option("-o,--output", options->output, "Write the mesh (.stl binary or .vtp)");
   command->add_flag("--json", options->json, "Print the mesh report as JSON on stdout");
+  command->add_flag("--quiet", options->quiet, "No progress on the terminal");
   command->callback([options] { run_generate(*options); });
 }
 

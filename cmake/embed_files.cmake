@@ -1,8 +1,10 @@
-# Writes a C++ source that holds files of share/ as string literals, so that the rbcsim binary
-# runs anywhere with its defaults (docs/architecture.md, "Embedded defaults").
-# Run as: cmake -DBASE_DIR=<share> -DFILES=<a|b|...> -DOUTPUT=<file.cpp> -P embed_files.cmake
+# Writes a C++ source that holds files (of share/, of meshes/) as string literals, so that the
+# rbcsim binary runs anywhere with its defaults (docs/architecture.md, "Embedded defaults").
+# Run as: cmake -DBASE_DIR=<dir> -DFILES=<a|b|...> -DOUTPUT=<file.cpp> -DHEADER=<include>
+#               -DNAMESPACE=<ns> -DFUNCTION=<name> -P embed_files.cmake
 # FILES are paths relative to BASE_DIR separated by '|'. Each byte becomes a \x escape, so any
-# content (quotes, backslashes, non-ASCII) survives unchanged.
+# content (quotes, backslashes, non-ASCII) survives unchanged. The source defines
+# `std::span<const rbcsim::EmbeddedFile> NAMESPACE::FUNCTION()`, declared in HEADER.
 string(REPLACE "|" ";" relative_paths "${FILES}")
 set(entries "")
 foreach(relative_path IN LISTS relative_paths)
@@ -14,20 +16,20 @@ foreach(relative_path IN LISTS relative_paths)
 endforeach()
 list(LENGTH relative_paths count)
 file(WRITE "${OUTPUT}"
-"// Generated at build time by cmake/embed_files.cmake from share/: do not edit.
-#include \"config/embedded_share.hpp\"
+"// Generated at build time by cmake/embed_files.cmake from ${BASE_DIR}: do not edit.
+#include \"${HEADER}\"
 
 #include <array>
 
-namespace rbcsim::config {
+namespace ${NAMESPACE} {
 namespace {
 
-constexpr std::array<EmbeddedFile, ${count}> kEmbeddedFiles{{
+constexpr std::array<rbcsim::EmbeddedFile, ${count}> kEmbeddedFiles{{
 ${entries}}};
 
 }  // namespace
 
-std::span<const EmbeddedFile> embedded_share_files() { return kEmbeddedFiles; }
+std::span<const rbcsim::EmbeddedFile> ${FUNCTION}() { return kEmbeddedFiles; }
 
-}  // namespace rbcsim::config
+}  // namespace ${NAMESPACE}
 ")

@@ -6,12 +6,11 @@
 #include <span>
 #include <string_view>
 
+#include "common/embedded_file.hpp"
+
 namespace rbcsim::config {
 
-struct EmbeddedFile {
-  std::string_view relative_path;  // below share/, e.g. "config/discocyte.json"
-  std::string_view content;
-};
+using rbcsim::EmbeddedFile;
 
 std::span<const EmbeddedFile> embedded_share_files();
 

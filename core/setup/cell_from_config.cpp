@@ -6,6 +6,7 @@
 
 #include "cases/capillary_observables.hpp"
 #include "common/format.hpp"
+#include "config/option_table.hpp"
 #include "config/validation.hpp"
 #include "ibm/delta_kernels.hpp"
 #include "mesh/import.hpp"
@@ -57,6 +58,43 @@ mesh::CellShapeParameters cell_shape_parameters_from(const config::Config& confi
   return parameters;
 }
 
+shapes::NamedCellSettings named_cell_settings_from(const config::Config& config,
+                                                   std::string_view shape) {
+  shapes::NamedCellSettings settings;
+  settings.method = config.string("mesh.method");
+  settings.subdivisions = config.integer("mesh.subdivisions");
+  settings.parametric = cell_shape_parameters_from(config);
+  auto& energy = settings.energy;
+  energy.area_um2 = config.number("mesh.energy.membrane_area_um2");
+  energy.reduced_volume = config.number("mesh.energy.reduced_volume");
+  energy.bending_modulus_J = config.number("mesh.energy.bending_modulus_J");
+  energy.nonlocal_bending_ratio = config.number("mesh.energy.nonlocal_bending_ratio");
+  energy.skeleton.shear_modulus_pN_per_um = config.number("mesh.energy.shear_modulus_uN_per_m");
+  energy.skeleton.area_modulus_pN_per_um = config.number("mesh.energy.area_modulus_uN_per_m");
+  energy.skeleton.a3 = config.number("mesh.energy.skeleton_a3");
+  energy.skeleton.a4 = config.number("mesh.energy.skeleton_a4");
+  energy.skeleton.b1 = config.number("mesh.energy.skeleton_b1");
+  energy.skeleton.b2 = config.number("mesh.energy.skeleton_b2");
+  energy.skeleton_reference_reduced_volume =
+      config.number("mesh.energy.skeleton_reference_reduced_volume");
+  energy.paths = config.string_list("mesh.energy.paths");
+  energy.soft_skeleton_fraction = config.number("mesh.energy.soft_skeleton_fraction");
+  energy.volume_stages = config.integer("mesh.energy.volume_stages");
+  energy.stiffening_stages = config.integer("mesh.energy.stiffening_stages");
+  energy.stage_iterations =
+      static_cast<std::size_t>(config.integer("mesh.energy.stage_iterations"));
+  energy.trials = config.integer("mesh.energy.trials");
+  energy.seed = static_cast<std::uint64_t>(config.integer("mesh.energy.seed"));
+  energy.perturbation_um = config.number("mesh.energy.perturbation_um");
+  energy.force_tolerance_pN = config.number("mesh.energy.force_tolerance_pN");
+  energy.max_iterations = static_cast<std::size_t>(config.integer("mesh.energy.max_iterations"));
+  const std::string key = "mesh.energy.relaxed_area_difference." + std::string(shape);
+  if (config::option_table().find(key) != nullptr) {
+    energy.relaxed_area_difference = config.number(key);
+  }
+  return settings;
+}
+
 CellMesh cell_mesh_from(const config::Config& config) {
   const auto file = config.string("mesh.file");
   if (!file.empty()) {
@@ -66,15 +104,12 @@ CellMesh cell_mesh_from(const config::Config& config) {
     return {std::move(imported.mesh), file, std::move(imported.notices), {}};
   }
   const auto shape = config.string("morphology");
-  const auto level = config.integer("mesh.subdivisions");
-  return {mesh::generate_cell(shape, level, cell_shape_parameters_from(config)),
-          "built-in " + shape + " level " + std::to_string(level),
-          {},
-          {}};
+  auto cell = shapes::make_named_cell(shape, "morphology", named_cell_settings_from(config, shape));
+  return {std::move(cell.mesh), std::move(cell.source), {}, {}};
 }
 
 void add_resolution_notice(CellMesh& cell, const config::Config& config) {
-  if (!config.string("mesh.file").empty()) return;
+  if (!config.string("mesh.file").empty() || config.string("mesh.method") != "parametric") return;
   auto notice =
       mesh::resolution_notice(config.string("morphology"), config.integer("mesh.subdivisions"),
                               cell_shape_parameters_from(config), cell.mesh);

@@ -10,10 +10,17 @@
 #include "common/vec3.hpp"
 #include "config/config.hpp"
 #include "mesh/cell_shapes.hpp"
+#include "shapes/named_cells.hpp"
 
 namespace rbcsim::setup {
 
 mesh::CellShapeParameters cell_shape_parameters_from(const config::Config& config);
+
+// How the built-in `shape` is made: mesh.method, mesh.subdivisions, the mesh.energy.* model and
+// path with the shape's own mesh.energy.relaxed_area_difference.<shape> (a shape the energy
+// method does not know keeps the default), and the parametric generators' mesh.<shape>.* numbers.
+shapes::NamedCellSettings named_cell_settings_from(const config::Config& config,
+                                                   std::string_view shape);
 
 struct CellMesh {
   mesh::TriangleMesh mesh;

@@ -108,7 +108,8 @@ TEST_F(CliMesh, BadInputExitsTwoWithOneLineAndNoOutputFile) {
 
   const auto unknown = run("mesh generate --shape spherocyte -o x.stl");
   EXPECT_EQ(unknown.exit_code, 2);
-  EXPECT_NE(unknown.err.find("unknown cell shape 'spherocyte'"), std::string::npos);
+  EXPECT_EQ(unknown.err.rfind("rbcsim: error: --shape: \"spherocyte\" is not a shape", 0), 0u)
+      << unknown.err;
   EXPECT_FALSE(fs::exists(dir_ / "x.stl"));
 
   const auto format = run("mesh generate --subdivisions 1 -o cell.obj");

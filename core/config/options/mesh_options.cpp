@@ -1,6 +1,9 @@
 #include "config/options/option_areas.hpp"
 #include "mesh/cell_shapes.hpp"
 #include "mesh/import.hpp"
+#include "shapes/energy_shape.hpp"
+#include "shapes/named_cells.hpp"
+#include "shapes/sequence.hpp"
 
 namespace rbcsim::config {
 namespace {
@@ -69,9 +72,118 @@ void add_echinocyte_options(OptionTable& table) {
       .above(0.0);
 }
 
+// The bilayer-couple model of the energy-minimised shapes (shapes/energy_shape.hpp): literature
+// values (Lim, Wortis & Mukhopadhyay 2002) and the path the minimiser takes.
+void add_energy_model_options(OptionTable& table) {
+  const shapes::EnergyShapeSettings defaults;
+  table
+      .add_number("mesh.energy.membrane_area_um2", "um^2", defaults.area_um2,
+                  "Membrane area held by the minimisation (Evans-Fung's discocyte: the shape "
+                  "change conserves it).")
+      .above(0.0);
+  table
+      .add_number("mesh.energy.reduced_volume", "", defaults.reduced_volume,
+                  "Reduced volume 6 sqrt(pi) V / A^1.5 held by the minimisation (Lim et al. 2002 "
+                  "keep 0.642 along the whole sequence).")
+      .above(0.0)
+      .below(1.0);
+  table
+      .add_number("mesh.energy.bending_modulus_J", "J", defaults.bending_modulus_J,
+                  "Helfrich bending modulus kappa of the bilayer (Lim et al. 2002).")
+      .above(0.0);
+  table
+      .add_number("mesh.energy.nonlocal_bending_ratio", "", defaults.nonlocal_bending_ratio,
+                  "Area-difference elasticity modulus over kappa, alpha (Lim et al. 2002: 2/pi).")
+      .at_least(0.0);
+  table
+      .add_number("mesh.energy.shear_modulus_uN_per_m", "uN/m",
+                  defaults.skeleton.shear_modulus_pN_per_um,
+                  "Shear modulus mu of the membrane skeleton (Lim et al. 2002).")
+      .above(0.0);
+  table
+      .add_number("mesh.energy.area_modulus_uN_per_m", "uN/m",
+                  defaults.skeleton.area_modulus_pN_per_um,
+                  "Stretch (area) modulus K_alpha of the skeleton (Lim et al. 2002: 2 mu).")
+      .above(0.0);
+  table.add_number("mesh.energy.skeleton_a3", "", defaults.skeleton.a3,
+                   "Cubic dilation coefficient of Lim's skeleton energy.");
+  table.add_number("mesh.energy.skeleton_a4", "", defaults.skeleton.a4,
+                   "Quartic dilation coefficient of Lim's skeleton energy.");
+  table.add_number("mesh.energy.skeleton_b1", "", defaults.skeleton.b1,
+                   "Dilation-shear coupling coefficient of Lim's skeleton energy.");
+  table.add_number("mesh.energy.skeleton_b2", "", defaults.skeleton.b2,
+                   "Quadratic shear coefficient of Lim's skeleton energy.");
+  table
+      .add_number("mesh.energy.skeleton_reference_reduced_volume", "",
+                  defaults.skeleton_reference_reduced_volume,
+                  "Reduced volume of the skeleton's stress-free shape, an oblate spheroid of the "
+                  "membrane's area (near-spherical, as Lim et al.'s).")
+      .above(0.0)
+      .below(1.0);
+  for (const auto& shape : shapes::shape_sequence().entries()) {
+    table.add_number("mesh.energy.relaxed_area_difference." + std::string(shape.name), "",
+                     shape.relaxed_area_difference,
+                     "Reduced relaxed area difference Delta a0 of the " + std::string(shape.name) +
+                         " (" + std::string(shape.description) + ").");
+  }
+}
+
+void add_energy_path_options(OptionTable& table) {
+  const shapes::EnergyShapeSettings defaults;
+  table.add_choice_list("mesh.energy.paths", shapes::energy_paths().names(), defaults.paths,
+                        "Paths from the reference every trial follows (the lowest valid minimum "
+                        "wins): " +
+                            shapes::energy_paths().described_names() + ".");
+  table
+      .add_number("mesh.energy.soft_skeleton_fraction", "", defaults.soft_skeleton_fraction,
+                  "The skeleton's moduli during deflation, relative to their values (a nearly "
+                  "fluid membrane first, then stiffened).")
+      .above(0.0)
+      .at_most(1.0);
+  table
+      .add_integer("mesh.energy.volume_stages", "", defaults.volume_stages,
+                   "Equal steps of the deflation from the reference's volume to the target's.")
+      .at_least(1);
+  table
+      .add_integer("mesh.energy.stiffening_stages", "", defaults.stiffening_stages,
+                   "Geometric steps from the soft to the full skeleton.")
+      .at_least(1);
+  table
+      .add_integer("mesh.energy.stage_iterations", "", static_cast<int>(defaults.stage_iterations),
+                   "FIRE iterations per stage of the path, at most.")
+      .at_least(1);
+  table
+      .add_integer("mesh.energy.trials", "", defaults.trials,
+                   "Seeded starts; the lowest energy wins.")
+      .at_least(1)
+      .at_most(100);
+  table
+      .add_integer("mesh.energy.seed", "", static_cast<int>(defaults.seed),
+                   "Seed of the first trial's random start (trial k uses seed + k).")
+      .at_least(0);
+  table
+      .add_number("mesh.energy.perturbation_um", "um", defaults.perturbation_um,
+                  "Amplitude of the seeded random displacement of every vertex at every stage "
+                  "(breaks symmetries the minimum must not inherit from the icosphere).")
+      .at_least(0.0);
+  table
+      .add_number("mesh.energy.force_tolerance_pN", "pN", defaults.force_tolerance_pN,
+                  "Converged when no vertex's force (tangent to the held area and volume) exceeds "
+                  "this.")
+      .above(0.0);
+  table
+      .add_integer(
+          "mesh.energy.max_iterations", "", static_cast<int>(defaults.max_iterations),
+          "FIRE iterations of the final minimisation, at most; more is a failure (exit 1).")
+      .at_least(1);
+}
+
 }  // namespace
 
 void add_mesh_options(OptionTable& table) {
+  table.add_choice(
+      "mesh.method", shapes::shape_methods().names(), "parametric",
+      "How a built-in shape is made: " + shapes::shape_methods().described_names() + ".");
   table.add_string("mesh.file", "",
                    "Cell mesh to import (STL, OBJ, PLY, OFF); empty: generate the morphology's "
                    "built-in shape.");
@@ -89,6 +201,8 @@ void add_mesh_options(OptionTable& table) {
   add_discocyte_options(table);
   add_stomatocyte_options(table);
   add_echinocyte_options(table);
+  add_energy_model_options(table);
+  add_energy_path_options(table);
 }
 
 }  // namespace rbcsim::config

@@ -1,0 +1,115 @@
+// Cell shapes as minima of the bilayer-couple energy (bilayer_couple.hpp). The icosphere of the
+// requested level is mapped onto the skeleton's stress-free reference, a near-spherical oblate
+// spheroid of the membrane's area (as Lim, Wortis & Mukhopadhyay 2002 take it), and each trial
+// follows a path from there (energy_paths below): a seeded random displacement, deflation in
+// stages to the target reduced volume at the shape's relaxed area difference Delta a0, and a
+// final FIRE minimisation, area and volume held throughout. The paths reach different local
+// minima (a fluid-like membrane folds into a biconcave disc where a stiff one stays a convex
+// oblate; a stiff one keeps a cup's lip clear of its wall where a fluid-like one folds it through),
+// so every trial of every path is run and the lowest energy wins among the minima that do not pass
+// through themselves (mesh/self_intersection.hpp). The winner is the stress-free reference of the
+// six-force membrane of every later run (paper Sec. 2: the shapes of a shape-change minimisation).
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <numbers>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/registry.hpp"
+#include "membrane/surface_energies.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "shapes/bilayer_couple.hpp"
+
+namespace rbcsim::shapes {
+
+// A path from the reference to the shape: the skeleton's moduli during the deflation, relative to
+// their values (then stiffened to them in geometric steps).
+struct EnergyPath {
+  std::string_view name;
+  std::string_view description;
+  bool soft_deflation;  // deflate at soft_skeleton_fraction of the moduli, then stiffen
+};
+const Registry<EnergyPath>& energy_paths();
+
+struct EnergyShapeSettings {
+  double area_um2 = 134.09;       // the membrane area (Evans-Fung's discocyte: area is conserved)
+  double reduced_volume = 0.642;  // v = 6 sqrt(pi) V / A^1.5 (Lim et al. 2002)
+  double relaxed_area_difference = 1.0;  // Delta a0 = DeltaA0 / (8 pi D R_A) of the shape
+  double bending_modulus_J = 2e-19;      // kappa (Lim et al. 2002)
+  double nonlocal_bending_ratio = 2.0 / std::numbers::pi;  // alpha = kappa_bar / kappa
+  membrane::SkeletonParameters skeleton;                   // mu, K_alpha, a3, a4, b1, b2
+  // The skeleton's stress-free shape: an oblate spheroid of this reduced volume and the
+  // membrane's area.
+  double skeleton_reference_reduced_volume = 0.96;
+
+  std::vector<std::string> paths = {"soft", "stiff"};  // names of energy_paths()
+  double soft_skeleton_fraction = 0.01;  // the soft path's deflation moduli, of the full
+  int volume_stages = 10;                // equal steps from the reference's volume to the target
+  int stiffening_stages = 4;             // geometric steps from soft to full moduli
+  std::size_t stage_iterations = 3000;   // FIRE iterations per stage, at most
+  // A stage ends when no vertex's force exceeds this: the path needs no precise intermediate
+  // minima, only the final state does (force_tolerance_pN).
+  double stage_force_tolerance_pN = 1e-5;
+
+  int trials = 1;                       // seeded starts per path; the lowest energy wins
+  std::uint64_t seed = 1;               // of the first trial; trial k uses seed + k
+  double perturbation_um = 0.02;        // amplitude of the seeded displacement at every stage
+  double force_tolerance_pN = 1e-7;     // converged: every vertex's projected force below this
+  std::size_t max_iterations = 300000;  // of the final minimisation
+};
+
+struct EnergyShapeTrial {
+  std::string path;
+  std::uint64_t seed = 0;
+  BilayerCoupleEnergies energies;
+  std::size_t iterations = 0;  // all stages
+  bool converged = false;
+  double max_force_pN = 0.0;
+  std::size_t self_intersections = 0;  // intersecting triangle pairs of its minimum
+  std::optional<std::string> failure;  // why the trial has no minimum (a RuntimeFailure's text)
+  double seconds = 0.0;
+  // A minimum that can win: converged, and not passing through itself.
+  bool valid() const { return !failure && converged && self_intersections == 0; }
+};
+
+struct EnergyShape {
+  // The winning trial's minimum, centred, principal axes on x, y, z, and its coordinates rounded
+  // to single precision as its STL file stores them, so that a shape read back from its file is
+  // the shape generated (the stress-free reference of every run is the same either way).
+  mesh::TriangleMesh mesh;
+  mesh::TriangleMesh skeleton_reference;
+  BilayerCoupleEnergies energies;
+  double reduced_area_difference = 0.0;  // Delta a of the minimum (realised, not relaxed)
+  std::vector<EnergyShapeTrial> trials;
+  std::size_t best_trial = 0;
+};
+
+// Progress: trial index, stage (volume_stages + 1 is the final minimisation), FIRE's state.
+using EnergyShapeProgress =
+    std::function<void(int trial, int stage, const minimise::FireResult& so_far)>;
+
+// Throws InputError naming the mesh.energy key for settings the model cannot take (a reduced
+// volume outside (0, reference's), a non-positive modulus, an unknown path), RuntimeFailure when
+// no trial gives a valid minimum (naming each trial's residual or failure).
+EnergyShape minimise_shape(int subdivisions, const EnergyShapeSettings& settings,
+                           const EnergyShapeProgress& progress = {});
+
+// The model the settings describe, holding `area_um2` and `volume_um3` (kappa converted to pN um).
+BilayerCoupleParameters bilayer_couple_parameters(const EnergyShapeSettings& settings,
+                                                  double area_um2, double volume_um3);
+
+// The settings as JSON, member names as in the config's mesh.energy.* keys (without the shape's
+// own relaxed_area_difference.<shape> suffix): what a shipped shape was generated with.
+nlohmann::ordered_json to_json(const EnergyShapeSettings& settings);
+
+// The skeleton's reference at a level: unit_icosphere(subdivisions) scaled along z to an oblate
+// spheroid of `reduced_volume` (of the mesh itself, by bisection on the axis ratio), then to
+// `area_um2`.
+mesh::TriangleMesh oblate_spheroid(int subdivisions, double reduced_volume, double area_um2);
+
+}  // namespace rbcsim::shapes
