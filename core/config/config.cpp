@@ -97,6 +97,17 @@ const json& Config::value(std::string_view path, std::initializer_list<OptionTyp
   return tree_.at(json_pointer(path));
 }
 
+Config Config::with(std::string_view path, const nlohmann::json& value) const {
+  const auto* option = option_table().find(path);
+  if (!option) throw std::logic_error("config: no option `" + std::string(path) + "`");
+  if (const auto problem = value_problem(*option, value)) {
+    throw std::logic_error("config: derived `" + std::string(path) + "`: " + *problem);
+  }
+  auto tree = tree_;
+  tree[json_pointer(path)] = value;
+  return Config(std::move(tree));
+}
+
 double Config::number(std::string_view path) const {
   return value(path, {OptionType::number, OptionType::integer}, "number").get<double>();
 }

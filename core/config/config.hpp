@@ -50,6 +50,12 @@ class Config {
   std::string string(std::string_view path) const;                    // string and choice options
   std::vector<std::string> string_list(std::string_view path) const;  // choice lists
 
+  // A copy with the option at `path` set to `value`: for settings a command derives from the
+  // user's (the capillary's time-scale compression). Throws std::logic_error for a path that is
+  // not an option or a value its row refuses (a derived value out of range is a programming
+  // error, the user's values having been checked).
+  Config with(std::string_view path, const nlohmann::json& value) const;
+
   // The whole resolved tree: every option, nested by path.
   const nlohmann::json& json() const { return tree_; }
 

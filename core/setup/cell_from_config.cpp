@@ -77,7 +77,6 @@ shapes::NamedCellSettings named_cell_settings_from(const config::Config& config,
   energy.skeleton.b2 = config.number("mesh.energy.skeleton_b2");
   energy.skeleton_reference_reduced_volume =
       config.number("mesh.energy.skeleton_reference_reduced_volume");
-  energy.paths = config.string_list("mesh.energy.paths");
   energy.soft_skeleton_fraction = config.number("mesh.energy.soft_skeleton_fraction");
   energy.volume_stages = config.integer("mesh.energy.volume_stages");
   energy.stiffening_stages = config.integer("mesh.energy.stiffening_stages");
@@ -91,6 +90,8 @@ shapes::NamedCellSettings named_cell_settings_from(const config::Config& config,
   const std::string key = "mesh.energy.relaxed_area_difference." + std::string(shape);
   if (config::option_table().find(key) != nullptr) {
     energy.relaxed_area_difference = config.number(key);
+    energy.relaxed_area_difference_key = key;
+    energy.paths = config.string_list("mesh.energy.paths." + std::string(shape));
   }
   return settings;
 }
@@ -126,7 +127,7 @@ void add_edge_spacing_notice(CellMesh& cell, double spacing_um) {
       " lattice spacings (lattice.spacing_um = " + format_number(spacing_um) +
       "); with edges of half a spacing the paper's cell fails at the local-area limit in "
       "sustained flow at capillary numbers near 1 (it passes at 0.075), with edges of about one "
-      "spacing it passes at both (README.md, rbcsim capillary)");
+      "spacing it passes at both (docs/validation.md, capillary)");
 }
 
 void require_cell_fits_domain(const mesh::TriangleMesh& cell, const Vec3& domain_extent_um,

@@ -35,14 +35,24 @@ void check_settings(const EnergyShapeSettings& settings) {
   require_positive(settings.bending_modulus_J, "mesh.energy.bending_modulus_J");
   require_positive(settings.skeleton.shear_modulus_pN_per_um, "mesh.energy.shear_modulus_uN_per_m");
   require_positive(settings.skeleton.area_modulus_pN_per_um, "mesh.energy.area_modulus_uN_per_m");
-  if (!(settings.reduced_volume > 0.0 &&
+  if (!(settings.reduced_volume >= kLowestReachableReducedVolume &&
         settings.reduced_volume <= settings.skeleton_reference_reduced_volume)) {
-    throw InputError(
-        "mesh.energy.reduced_volume",
-        "must lie in (0, " + format_number(settings.skeleton_reference_reduced_volume) +
-            "], the skeleton reference's (mesh.energy.skeleton_reference_reduced_volume)"
-            ", from which the shape is deflated; got " +
-            format_number(settings.reduced_volume));
+    throw InputError("mesh.energy.reduced_volume",
+                     "must lie in [" + format_number(kLowestReachableReducedVolume) + ", " +
+                         format_number(settings.skeleton_reference_reduced_volume) +
+                         "]: the lowest reached, and the skeleton reference's "
+                         "(mesh.energy.skeleton_reference_reduced_volume) the shape is deflated "
+                         "from; got " +
+                         format_number(settings.reduced_volume));
+  }
+  const auto [lowest, highest] = kReachableAreaDifference;
+  if (!(settings.relaxed_area_difference >= lowest &&
+        settings.relaxed_area_difference <= highest)) {
+    throw InputError(settings.relaxed_area_difference_key,
+                     format_number(settings.relaxed_area_difference) +
+                         " is outside the range the model reaches, " + format_number(lowest) +
+                         " to " + format_number(highest) +
+                         " (beyond, the minimisation does not converge or the cup closes)");
   }
 }
 

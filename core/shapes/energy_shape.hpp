@@ -36,11 +36,19 @@ struct EnergyPath {
 };
 const Registry<EnergyPath>& energy_paths();
 
+// The relaxed area differences and reduced volumes the model reaches: measured at 2562
+// vertices (docs/validation.md): beyond Delta a0 = 14 the minimisation does not converge, below
+// -6 the cup closes on itself; v was scanned only down to 0.5. Outside, InputError.
+inline constexpr double kReachableAreaDifference[2] = {-6.0, 14.0};
+inline constexpr double kLowestReachableReducedVolume = 0.5;
+
 struct EnergyShapeSettings {
   double area_um2 = 134.09;       // the membrane area (Evans-Fung's discocyte: area is conserved)
   double reduced_volume = 0.642;  // v = 6 sqrt(pi) V / A^1.5 (Lim et al. 2002)
   double relaxed_area_difference = 1.0;  // Delta a0 = DeltaA0 / (8 pi D R_A) of the shape
-  double bending_modulus_J = 2e-19;      // kappa (Lim et al. 2002)
+  // The config key diagnostics name for relaxed_area_difference (the shape's own).
+  std::string relaxed_area_difference_key = "mesh.energy.relaxed_area_difference";
+  double bending_modulus_J = 2e-19;                        // kappa (Lim et al. 2002)
   double nonlocal_bending_ratio = 2.0 / std::numbers::pi;  // alpha = kappa_bar / kappa
   membrane::SkeletonParameters skeleton;                   // mu, K_alpha, a3, a4, b1, b2
   // The skeleton's stress-free shape: an oblate spheroid of this reduced volume and the

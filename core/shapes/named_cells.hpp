@@ -27,7 +27,7 @@ struct ShapeMethod {
 const Registry<ShapeMethod>& shape_methods();
 
 struct NamedCellSettings {
-  std::string method = "parametric";
+  std::string method = "energy";
   int subdivisions = 4;
   // For `energy`: relaxed_area_difference must already be the requested shape's.
   EnergyShapeSettings energy;

@@ -5,7 +5,9 @@
 // is generated at and why (docs/physics.md, "Shapes from membrane mechanics").
 #pragma once
 
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "common/registry.hpp"
 
@@ -15,6 +17,8 @@ struct SequenceShape {
   std::string_view name;           // as on the command line: "stomatocyte-II"
   std::string_view description;    // the morphological class (Lim 2003; the paper's Sec. 1)
   double relaxed_area_difference;  // default Delta a0 (mesh.energy.relaxed_area_difference.<name>)
+  // Default paths of its minimisation (mesh.energy.paths.<name>; energy_shape.hpp).
+  std::vector<std::string> paths;
 };
 
 // In sequence order, from the most stomatocytic to the most echinocytic.

@@ -77,20 +77,58 @@ AxisFrame axis_frame(const mesh::TriangleMesh& mesh) {
   return frame;
 }
 
+// Height of each vertex above the mean of its neighbours along its area-weighted normal, per mean
+// neighbour distance.
+std::vector<double> ring_heights_per_edge(const mesh::TriangleMesh& mesh,
+                                          const mesh::MeshTopology& topology) {
+  const auto& edge_offsets = topology.vertex_edge_offsets();
+  const auto& vertex_edges = topology.vertex_edges();
+  const auto& triangle_offsets = topology.vertex_triangle_offsets();
+  const auto& vertex_triangles = topology.vertex_triangles();
+  std::vector<double> heights(mesh.vertex_count());
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    Vec3 normal = Vec3::Zero();
+    for (auto slot = triangle_offsets[v]; slot < triangle_offsets[v + 1]; ++slot) {
+      normal +=
+          mesh::triangle_area_vector(mesh.positions_um, mesh.triangles[vertex_triangles[slot]]);
+    }
+    Vec3 ring = Vec3::Zero();
+    double distance = 0.0;
+    const auto count = edge_offsets[v + 1] - edge_offsets[v];
+    for (auto slot = edge_offsets[v]; slot < edge_offsets[v + 1]; ++slot) {
+      const auto& edge = topology.edges()[static_cast<std::size_t>(vertex_edges[slot])];
+      const auto other = static_cast<std::size_t>(
+          edge.vertex0 == static_cast<std::int32_t>(v) ? edge.vertex1 : edge.vertex0);
+      ring += mesh.positions_um[other];
+      distance += (mesh.positions_um[other] - mesh.positions_um[v]).norm();
+    }
+    ring /= static_cast<double>(count);
+    distance /= static_cast<double>(count);
+    heights[v] = (mesh.positions_um[v] - ring).dot(normal.normalized()) / distance;
+  }
+  return heights;
+}
+
 }  // namespace
 
 Spicules find_spicules(const mesh::TriangleMesh& mesh) {
   const Vec3 centre = mesh::solid_centroid_um(mesh);
   const auto curvatures = mean_curvatures_per_um(mesh);
+  const auto ring_heights = ring_heights_per_edge(mesh, mesh::MeshTopology::build(mesh));
   const auto& positions = mesh.positions_um;
   const std::size_t count = positions.size();
   std::vector<double> radii(count);
   for (std::size_t i = 0; i < count; ++i) radii[i] = (positions[i] - centre).norm();
 
   Spicules spicules;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (ring_heights[i] > kSpikeHeightPerEdge) spicules.spike_vertices.push_back(i);
+  }
   double height_sum = 0.0;
   for (std::size_t i = 0; i < count; ++i) {
-    if (curvatures[i] <= kSpiculeTipMeanCurvature_per_um) continue;
+    if (curvatures[i] <= kSpiculeTipMeanCurvature_per_um || ring_heights[i] > kSpikeHeightPerEdge) {
+      continue;
+    }
     bool farthest = true;
     double base_sum = 0.0;
     std::size_t base_count = 0;

@@ -25,8 +25,16 @@ inline constexpr double kSpiculeBaseInner_um = 0.8;
 inline constexpr double kSpiculeBaseOuter_um = 1.2;
 inline constexpr double kSpiculeProminence_um = 0.1;
 
+// A mesh spike: a single vertex pulled out of its ring of neighbours, a pyramid that no
+// continuous surface resolves. Its height above the mean of its neighbours, along its normal,
+// exceeds kSpikeHeightPerEdge of their mean distance (measured: resolved spicule tips rise at
+// most 0.45 of an edge above their ring, single-vertex spikes 0.86-0.95). Spikes are counted
+// apart, never as spicules.
+inline constexpr double kSpikeHeightPerEdge = 0.6;
+
 struct Spicules {
-  std::vector<std::size_t> tip_vertices;
+  std::vector<std::size_t> tip_vertices;  // resolved spicules only
+  std::vector<std::size_t> spike_vertices;
   // Distance from each tip to its nearest neighbour tip: their mean and coefficient of variation
   // (standard deviation / mean; 0 for a perfectly regular pattern). Zero with fewer than 2 tips.
   double nearest_spacing_mean_um = 0.0;

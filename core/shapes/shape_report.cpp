@@ -14,6 +14,7 @@ nlohmann::ordered_json morphology_json(const mesh::TriangleMesh& mesh) {
   return {
       {"spicules",
        {{"count", spicules.tip_vertices.size()},
+        {"mesh_spikes", spicules.spike_vertices.size()},
         {"nearest_spacing_mean_um", spicules.nearest_spacing_mean_um},
         {"nearest_spacing_cv", spicules.nearest_spacing_cv},
         {"mean_height_um", spicules.mean_height_um}}},

@@ -86,12 +86,39 @@ void add_cell_options(OptionTable& table) {
       .above(0.0);
 }
 
+void add_ensemble_options(OptionTable& table) {
+  table
+      .add_integer("capillary.orientations", "", 1,
+                   "Releases of the cell in as many orientations (cases/release_orientations.hpp: "
+                   "a Fibonacci set on the sphere, the first the configured one, each spun by a "
+                   "seeded angle); with more than one, the run reports the transit's mean and "
+                   "spread (result.json capillary_ensemble) and keeps each in orientation_<k>/.")
+      .at_least(1)
+      .at_most(1000);
+  table.add_integer("capillary.orientation_seed", "", 1, "Seed of the orientations' spins.")
+      .at_least(0);
+}
+
+void add_compression_options(OptionTable& table) {
+  table.add_boolean("capillary.time_scale_compression", true,
+                    "Simulate the flow faster with a proportionally lower viscosity (the same "
+                    "capillary number, so the same shapes and transit) up to "
+                    "capillary.max_reynolds_number; results are converted back to physical time.");
+  table
+      .add_number("capillary.max_reynolds_number", "", 0.1,
+                  "Largest Reynolds number U D_inlet / nu the compression may reach (Stokes flow "
+                  "needs << 1).")
+      .above(0.0);
+}
+
 }  // namespace
 
 void add_capillary_options(OptionTable& table) {
   add_wall_options(table);
   add_flow_options(table);
   add_cell_options(table);
+  add_compression_options(table);
+  add_ensemble_options(table);
 }
 
 }  // namespace rbcsim::config

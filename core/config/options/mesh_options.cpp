@@ -121,6 +121,11 @@ void add_energy_model_options(OptionTable& table) {
       .above(0.0)
       .below(1.0);
   for (const auto& shape : shapes::shape_sequence().entries()) {
+    table.add_choice_list("mesh.energy.paths." + std::string(shape.name),
+                          shapes::energy_paths().names(), shape.paths,
+                          "Paths from the reference every trial of the " + std::string(shape.name) +
+                              " follows (the lowest valid minimum wins): " +
+                              shapes::energy_paths().described_names() + ".");
     table.add_number("mesh.energy.relaxed_area_difference." + std::string(shape.name), "",
                      shape.relaxed_area_difference,
                      "Reduced relaxed area difference Delta a0 of the " + std::string(shape.name) +
@@ -130,10 +135,7 @@ void add_energy_model_options(OptionTable& table) {
 
 void add_energy_path_options(OptionTable& table) {
   const shapes::EnergyShapeSettings defaults;
-  table.add_choice_list("mesh.energy.paths", shapes::energy_paths().names(), defaults.paths,
-                        "Paths from the reference every trial follows (the lowest valid minimum "
-                        "wins): " +
-                            shapes::energy_paths().described_names() + ".");
+
   table
       .add_number("mesh.energy.soft_skeleton_fraction", "", defaults.soft_skeleton_fraction,
                   "The skeleton's moduli during deflation, relative to their values (a nearly "
@@ -182,7 +184,7 @@ void add_energy_path_options(OptionTable& table) {
 
 void add_mesh_options(OptionTable& table) {
   table.add_choice(
-      "mesh.method", shapes::shape_methods().names(), "parametric",
+      "mesh.method", shapes::shape_methods().names(), "energy",
       "How a built-in shape is made: " + shapes::shape_methods().described_names() + ".");
   table.add_string("mesh.file", "",
                    "Cell mesh to import (STL, OBJ, PLY, OFF); empty: generate the morphology's "
