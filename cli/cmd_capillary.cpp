@@ -4,6 +4,8 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -11,6 +13,7 @@
 #include <vector>
 
 #include "cases/capillary_output.hpp"
+#include "cases/release_orientations.hpp"
 #include "command_registry.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -33,6 +36,7 @@ struct CapillaryOptions {
   std::optional<std::string> mesh_file;
   std::optional<std::string> geometry;
   std::optional<std::string> wall_file;
+  std::optional<std::string> orientations;
 };
 
 // The command's own options are --set assignments in disguise, so config.json records them.
@@ -46,6 +50,9 @@ config::Config resolve_capillary_config(const CapillaryOptions& options) {
   if (options.wall_file) {
     assign_option(request, "--wall", "capillary.wall_file", *options.wall_file);
   }
+  if (options.orientations) {
+    assign_option(request, "--orientations", "capillary.orientations", *options.orientations);
+  }
   return resolve_config(common);
 }
 
@@ -58,6 +65,20 @@ nlohmann::ordered_json headline(const cases::CapillaryRun& run) {
   };
   if (run.transit_time_s) numbers["transit_time_s"] = *run.transit_time_s;
   return numbers;
+}
+
+void print_ensemble(const nlohmann::ordered_json& ensemble) {
+  const auto& statistics = ensemble["statistics"];
+  std::printf("ensemble of %d orientations (seed %d), %d passed:\n",
+              ensemble["orientations"].get<int>(), ensemble["seed"].get<int>(),
+              ensemble["passed"].get<int>());
+  for (const char* key :
+       {"transit_time_s", "whole_cell_transit_time_s", "peak_deformation_index"}) {
+    const auto& s = statistics[key];
+    std::printf("  %-26s mean %.6g, standard deviation %.3g (min %.6g, max %.6g)\n", key,
+                s["mean"].get<double>(), s["standard_deviation"].get<double>(),
+                s["min"].get<double>(), s["max"].get<double>());
+  }
 }
 
 void print_summary(const nlohmann::ordered_json& result, const cases::CapillaryRun& run,
@@ -93,74 +114,224 @@ void print_summary(const nlohmann::ordered_json& result, const cases::CapillaryR
               directory.threads(), directory.path().c_str());
 }
 
-void write_table(const RunDirectory& directory, const cases::CapillaryRun& run) {
+void write_table(const std::filesystem::path& directory, const cases::CapillaryRun& run) {
   std::vector<std::vector<double>> rows;
   for (const auto& sample : run.samples) rows.push_back(cases::capillary_table_row(sample));
-  io::write_csv_file(directory.path() / "capillary_timeseries.csv",
-                     cases::capillary_table_columns(), rows);
+  io::write_csv_file(directory / "capillary_timeseries.csv", cases::capillary_table_columns(),
+                     rows);
 }
 
 void add_progress(coupling::CoupledSimulation& simulation, const Progress& progress,
-                  const RunDirectory& directory) {
+                  const RunDirectory& directory, double time_scale) {
   simulation.add_observer(
       {"progress", kProgressIntervalSteps,
-       [&progress, &directory](const coupling::CoupledSimulation& s) {
+       [&progress, &directory, time_scale](const coupling::CoupledSimulation& s) {
          const double centroid_x_um = s.frame().to_um(s.cell(0).centroid_lu()).x();
          progress.update("capillary: step " + std::to_string(s.time_step()) +
-                         ", t = " + format_number(s.time_s()) + " s, centroid x = " +
+                         ", t = " + format_number(s.time_s() * time_scale) + " s, centroid x = " +
                          format_number(std::round(centroid_x_um * 100.0) / 100.0) + " um, " +
                          format_number(std::round(directory.elapsed_s())) + " s");
        }});
 }
 
+// What every orientation of the run shares.
+struct CapillaryContext {
+  const CapillaryOptions& options;
+  const config::Config& config;     // the user's, recorded in config.json
+  const config::Config& simulated;  // the compressed one the runs simulate
+  const setup::CapillaryWall& wall;
+  const setup::CapillaryCompression& compression;
+  const cases::CapillarySettings& settings;
+  const setup::CellMesh& cell;
+  const RunDirectory& directory;
+  const cases::CapillaryPhysics& physics;
+};
+
+// The "capillary" object of result.json for one run, its time scale included.
+nlohmann::ordered_json result_section(const CapillaryContext& c, const cases::CapillaryRun& run) {
+  auto section = cases::capillary_result_section(
+      {c.wall.geometry, c.settings.cell_axis, c.physics.membrane.forces}, run);
+  section["time_scale"] = {
+      {"compressed", c.compression.factor != 1.0},
+      {"factor", c.compression.factor},
+      {"physical_reynolds_number", c.compression.physical_reynolds_number},
+      {"simulated_reynolds_number", c.compression.simulated_reynolds_number},
+      {"simulated_kinematic_viscosity_m2_per_s",
+       c.compression.simulated_kinematic_viscosity_m2_per_s},
+      {"simulated_inlet_velocity_m_per_s", c.compression.simulated_inlet_velocity_m_per_s}};
+  return section;
+}
+
+// One release of `cell_mesh`, its files in `subdirectory` of the run directory ("" for a single
+// release, orientation_<k> in an ensemble).
+cases::CapillaryRun run_release(const CapillaryContext& c, const mesh::TriangleMesh& cell_mesh,
+                                const std::filesystem::path& subdirectory, bool& started) {
+  const auto output = c.directory.path() / subdirectory;
+  const auto intervals = setup::snapshot_intervals_from(c.simulated, c.physics.units);
+  const Progress progress(c.options.common);
+  auto physics = c.physics;  // an instability's dump goes to this release's directory
+  physics.coupling.run_directory = output;
+  auto run = cases::run_capillary(
+      cell_mesh, physics, c.settings, [&](coupling::CoupledSimulation& simulation) {
+        // Output observers before the checkpoint is wired: a resume restores their state.
+        coupling::add_vtk_output(simulation, output, intervals);
+        add_progress(simulation, progress, c.directory, c.compression.factor);
+        if (subdirectory.empty()) {
+          // Before the directory is started: a refused checkpoint leaves no file behind.
+          wire_checkpoints(simulation, c.options.checkpoint, c.directory, c.config);
+        }
+        if (!started) c.directory.start(c.config, c.cell);
+        started = true;
+        if (!subdirectory.empty()) {
+          wire_checkpoints_in(subdirectory, simulation, c.options.checkpoint, c.directory,
+                              c.config);
+        }
+      });
+  progress.done();
+  if (!started) c.directory.start(c.config, c.cell);
+  started = true;
+  std::filesystem::create_directories(output);
+  setup::to_physical_units(run, c.compression);
+  write_table(output, run);
+  return run;
+}
+
+// The ensemble's statistics over the releases that passed, per observable (result.json
+// "capillary_ensemble").
+nlohmann::ordered_json ensemble_section(const std::vector<nlohmann::ordered_json>& sections,
+                                        const std::vector<cases::ReleaseOrientation>& orientations,
+                                        std::uint64_t seed) {
+  auto releases = nlohmann::ordered_json::array();
+  for (std::size_t k = 0; k < sections.size(); ++k) {
+    const auto& s = sections[k];
+    const auto& o = orientations[k];
+    releases.push_back({{"index", k},
+                        {"directory", "orientation_" + std::to_string(k)},
+                        {"axis", {o.axis.x(), o.axis.y(), o.axis.z()}},
+                        {"spin_rad", o.spin_rad},
+                        {"passed", s["passed"]},
+                        {"transit_time_s", s["transit_time_s"]},
+                        {"whole_cell_transit_time_s", s["whole_cell_transit_time_s"]},
+                        {"entry_time_s", s["entry_time_s"]},
+                        {"exit_time_s", s["exit_time_s"]},
+                        {"peak_deformation_index", s["peak_deformation_index"]}});
+  }
+  nlohmann::ordered_json statistics;
+  for (const char* key : {"transit_time_s", "whole_cell_transit_time_s", "entry_time_s",
+                          "exit_time_s", "peak_deformation_index"}) {
+    std::vector<double> values;
+    for (const auto& s : sections) {
+      if (s["passed"].get<bool>() && s[key].is_number()) values.push_back(s[key].get<double>());
+    }
+    const auto spread = cases::spread_of(values);
+    statistics[key] = {{"count", spread.count},
+                       {"mean", spread.mean},
+                       {"standard_deviation", spread.standard_deviation},
+                       {"min", spread.min},
+                       {"max", spread.max}};
+  }
+  std::size_t passed = 0;
+  for (const auto& s : sections) passed += s["passed"].get<bool>() ? 1 : 0;
+  return {{"orientations", sections.size()},
+          {"seed", seed},
+          {"passed", passed},
+          {"statistics", statistics},
+          {"releases", releases}};
+}
+
+// A finished release of an interrupted ensemble: its result.json's capillary object.
+std::optional<nlohmann::ordered_json> finished_release(const std::filesystem::path& directory) {
+  const auto file = directory / "result.json";
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  std::ifstream in(file);
+  const auto result = nlohmann::ordered_json::parse(in, nullptr, false);
+  if (result.is_discarded() || result.value("status", "") == "interrupted") return std::nullopt;
+  return result["capillary"];
+}
+
 void run_capillary_command(const CapillaryOptions& options) {
   const auto config = resolve_capillary_config(options);
   const auto wall = setup::capillary_wall_from(config);
-  const auto settings = setup::capillary_settings_from(config, wall);
+  // The run simulates the compressed configuration; config.json keeps the user's.
+  const auto compression = setup::capillary_compression_from(config, wall);
+  const auto simulated = setup::compressed_capillary_config(config, wall, compression);
+  const auto settings = setup::capillary_settings_from(simulated, wall);
   auto cell_mesh = setup::cell_mesh_from(config);
   setup::add_resolution_notice(cell_mesh, config);
   setup::add_edge_spacing_notice(cell_mesh, config.number("lattice.spacing_um"));
   for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
+  const int count = config.integer("capillary.orientations");
+  const auto seed = static_cast<std::uint64_t>(config.integer("capillary.orientation_seed"));
+  const auto orientations = cases::release_orientations(count, seed);
 
   const RunDirectory directory("capillary", options.common, config);
-  const auto physics = setup::capillary_physics_from(config, wall, directory.path());
-  const auto intervals = setup::snapshot_intervals_from(config, physics.units);
-  const Progress progress(options.common);
-  // The directory is created once every input has been checked (the cell placed in the wall), so
-  // bad input leaves no file behind.
+  const auto physics = setup::capillary_physics_from(simulated, wall, directory.path());
+  const CapillaryContext context{options,  config,    simulated, wall,   compression,
+                                 settings, cell_mesh, directory, physics};
   bool started = false;
-  const auto run = cases::run_capillary(
-      cell_mesh.mesh, physics, settings, [&](coupling::CoupledSimulation& simulation) {
-        coupling::add_vtk_output(simulation, directory.path(), intervals);
-        add_progress(simulation, progress, directory);
-        // Before the directory is started: a refused checkpoint leaves no file behind.
-        wire_checkpoints(simulation, options.checkpoint, directory, config);
-        directory.start(config, cell_mesh);
-        started = true;
-      });
-  progress.done();
-  if (!started) directory.start(config, cell_mesh);
-
-  write_table(directory, run);
-  auto result = run.interrupted ? directory.result_head_with_status("interrupted")
-                                : directory.result_head(run.ok());
-  if (!run.ok()) result["failure"] = run.failure;
+  std::vector<nlohmann::ordered_json> sections;
+  std::optional<cases::CapillaryRun> first;
+  std::string failure;
+  bool interrupted = false;
+  for (int k = 0; k < count; ++k) {
+    const std::filesystem::path subdirectory =
+        count == 1 ? std::filesystem::path()
+                   : std::filesystem::path("orientation_" + std::to_string(k));
+    if (count > 1 && options.common.resuming) {
+      if (auto done = finished_release(directory.path() / subdirectory)) {
+        sections.push_back(std::move(*done));
+        continue;
+      }
+    }
+    auto run = run_release(context, cases::rotated(cell_mesh.mesh, orientations[k].rotation),
+                           subdirectory, started);
+    sections.push_back(result_section(context, run));
+    if (count > 1) {
+      auto result = run.interrupted ? directory.result_head_with_status("interrupted")
+                                    : directory.result_head(run.ok());
+      if (!run.ok()) result["failure"] = run.failure;
+      result["headline"] = headline(run);
+      result["capillary"] = sections.back();
+      directory.write_json((subdirectory / "result.json").string(), result);
+    }
+    if (!first) first = run;
+    if (!run.ok() && failure.empty()) {
+      failure =
+          (count > 1 ? "orientation " + std::to_string(k) + ": " : std::string()) + run.failure;
+    }
+    if (run.interrupted) {
+      interrupted = true;
+      break;
+    }
+  }
+  const auto& run = *first;
+  auto result = interrupted ? directory.result_head_with_status("interrupted")
+                            : directory.result_head(failure.empty());
+  if (!failure.empty()) result["failure"] = failure;
   result["headline"] = headline(run);
   result["files"] = {{"config", "config.json"},
-                     {"timeseries", "capillary_timeseries.csv"},
-                     {"membrane", "cell0.pvd"},
-                     {"fluid", "fluid.pvd"}};
-  result["capillary"] = cases::capillary_result_section(
-      {wall.geometry, settings.cell_axis, physics.membrane.forces}, run);
+                     {"timeseries", count == 1 ? "capillary_timeseries.csv"
+                                               : "orientation_0/capillary_timeseries.csv"},
+                     {"membrane", count == 1 ? "cell0.pvd" : "orientation_0/cell0.pvd"},
+                     {"fluid", count == 1 ? "fluid.pvd" : "orientation_0/fluid.pvd"}};
+  result["capillary"] = sections.front();
+  if (count > 1) {
+    result["capillary_ensemble"] = ensemble_section(sections, orientations, seed);
+    const auto& statistics = result["capillary_ensemble"]["statistics"];
+    result["headline"]["transit_time_mean_s"] = statistics["transit_time_s"]["mean"];
+    result["headline"]["transit_time_standard_deviation_s"] =
+        statistics["transit_time_s"]["standard_deviation"];
+  }
   directory.write_json("result.json", result);
 
   if (options.common.json) {
     std::cout << result.dump(2) << '\n';
   } else if (!options.common.quiet) {
     print_summary(result, run, directory);
+    if (count > 1) print_ensemble(result["capillary_ensemble"]);
   }
-  if (run.interrupted) throw Interrupted("capillary: " + run.failure);
-  if (!run.ok()) throw RuntimeFailure("capillary: " + run.failure);
+  if (interrupted) throw Interrupted("capillary: " + failure);
+  if (!failure.empty()) throw RuntimeFailure("capillary: " + failure);
 }
 
 void attach_capillary(CLI::App& application) {
@@ -185,6 +356,12 @@ void attach_capillary(CLI::App& application) {
                    "capillary; then give capillary.inlet_velocity_m_per_s and set "
                    "capillary.wall_repulsion_pN_per_um2=0")
       ->type_name("FILE.stl");
+  command
+      ->add_option("--orientations", options->orientations,
+                   "Release the cell in N orientations (capillary.orientations; a seeded "
+                   "Fibonacci set on the sphere, the first the configured one) and report the "
+                   "transit's mean and spread")
+      ->type_name("N");
   add_common_options(command, options->common);
   add_checkpoint_options(command, options->checkpoint, options->common);
   command->callback([options] { run_capillary_command(*options); });

@@ -185,24 +185,58 @@ CapillarySample sample_of(const coupling::CoupledSimulation& simulation) {
   return sample;
 }
 
-void copy_transit(const NarrowSectionTransit& transit, CapillaryRun& run) {
-  run.entry_time_s = transit.entry_time_s();
-  run.exit_time_s = transit.exit_time_s();
-  run.transit_time_s = transit.transit_time_s();
-  run.passed = transit.passed();
+// The narrow section's crossings of the cell's centroid, front (largest vertex x) and rear
+// (smallest vertex x).
+struct CellTransits {
+  NarrowSectionTransit centroid;
+  NarrowSectionTransit front;
+  NarrowSectionTransit rear;
+  CellTransits(double start_um, double end_um)
+      : centroid(start_um, end_um), front(start_um, end_um), rear(start_um, end_um) {}
+  void save_state(StateArchive& archive, const std::string& prefix) const {
+    centroid.save_state(archive, prefix + "transit.");
+    front.save_state(archive, prefix + "front_transit.");
+    rear.save_state(archive, prefix + "rear_transit.");
+  }
+  void restore_state(StateArchive& archive, const std::string& prefix) {
+    centroid.restore_state(archive, prefix + "transit.");
+    front.restore_state(archive, prefix + "front_transit.");
+    rear.restore_state(archive, prefix + "rear_transit.");
+  }
+};
+
+void copy_transit(const CellTransits& transits, CapillaryRun& run) {
+  run.entry_time_s = transits.centroid.entry_time_s();
+  run.exit_time_s = transits.centroid.exit_time_s();
+  run.transit_time_s = transits.centroid.transit_time_s();
+  run.passed = transits.centroid.passed();
+  run.front_entry_time_s = transits.front.entry_time_s();
+  run.rear_exit_time_s = transits.rear.exit_time_s();
+  run.whole_cell_transit_time_s.reset();
+  if (run.front_entry_time_s && run.rear_exit_time_s) {
+    run.whole_cell_transit_time_s = *run.rear_exit_time_s - *run.front_entry_time_s;
+  }
 }
 
 // Follows the transit and the peak deformation every step.
 class TransitRecorder {
  public:
-  TransitRecorder(CapillaryRun& run, NarrowSectionTransit& transit)
-      : run_(run), transit_(transit) {}
+  TransitRecorder(CapillaryRun& run, CellTransits& transit) : run_(run), transit_(transit) {}
 
   void operator()(const coupling::CoupledSimulation& simulation) {
     const double time_s = simulation.time_s();
     const double centroid_x_um = centroid_um(simulation).x();
     const double index = deformation_index(simulation.cell(0).positions_lu());
-    transit_.add_sample(time_s, centroid_x_um);
+    transit_.centroid.add_sample(time_s, centroid_x_um);
+    double front_lu = -INFINITY;
+    double rear_lu = INFINITY;
+    for (const auto& position : simulation.cell(0).positions_lu()) {
+      front_lu = std::max(front_lu, position.x());
+      rear_lu = std::min(rear_lu, position.x());
+    }
+    const auto& frame = simulation.frame();
+    transit_.front.add_sample(time_s, frame.origin_um.x() + frame.dx_um * front_lu);
+    transit_.rear.add_sample(time_s, frame.origin_um.x() + frame.dx_um * rear_lu);
     if (simulation.time_step() == 0) run_.initial_deformation_index = index;
     if (index > run_.peak_deformation_index) {
       run_.peak_deformation_index = index;
@@ -216,7 +250,7 @@ class TransitRecorder {
 
  private:
   CapillaryRun& run_;
-  NarrowSectionTransit& transit_;
+  CellTransits& transit_;
 };
 
 // The samples taken so far and the steps they were taken at.
@@ -261,7 +295,7 @@ void restore_samples(SampleLog& log, const std::vector<double>& values) {
 // the peak deformation) in the checkpoint, so a resumed run reports what a straight one would.
 class RecordInCheckpoint final : public coupling::StopCriterion {
  public:
-  RecordInCheckpoint(CapillaryRun& run, NarrowSectionTransit& transit, SampleLog& log,
+  RecordInCheckpoint(CapillaryRun& run, CellTransits& transit, SampleLog& log,
                      std::size_t sample_interval_steps)
       : run_(run), transit_(transit), log_(log), sample_interval_steps_(sample_interval_steps) {}
   std::optional<std::string> check(const coupling::CoupledSimulation& /*simulation*/) override {
@@ -272,7 +306,7 @@ class RecordInCheckpoint final : public coupling::StopCriterion {
     archive.put(prefix + "deformation",
                 {run_.initial_deformation_index, run_.peak_deformation_index, run_.peak_time_s,
                  run_.peak_centroid_x_um, run_.final_deformation_index, run_.final_centroid_x_um});
-    transit_.save_state(archive, prefix + "transit.");
+    transit_.save_state(archive, prefix);
   }
   void restore_state(StateArchive& archive, const std::string& prefix) override {
     const auto samples = archive.take(prefix + "samples", std::nullopt);
@@ -287,13 +321,13 @@ class RecordInCheckpoint final : public coupling::StopCriterion {
     run_.peak_centroid_x_um = deformation[3];
     run_.final_deformation_index = deformation[4];
     run_.final_centroid_x_um = deformation[5];
-    transit_.restore_state(archive, prefix + "transit.");
+    transit_.restore_state(archive, prefix);
     copy_transit(transit_, run_);
   }
 
  private:
   CapillaryRun& run_;
-  NarrowSectionTransit& transit_;
+  CellTransits& transit_;
   SampleLog& log_;
   std::size_t sample_interval_steps_;
 };
@@ -301,10 +335,19 @@ class RecordInCheckpoint final : public coupling::StopCriterion {
 void add_stop_criteria(coupling::CoupledSimulation& simulation, const CapillaryRun& run,
                        const CapillaryLattice& lattice, const CapillarySettings& settings) {
   const double passed_x_um = run.narrow_end_um + settings.pass_margin_um;
+  // Passed: the centroid beyond the margin and the whole cell out of the narrow section (so that
+  // the last vertex's exit, the whole-cell transit, is recorded too).
+  const double rear_out_lu =
+      (run.narrow_end_um - lattice.grid_um.origin_um.x()) / lattice.grid_um.dx_um;
   simulation.add_stop_criterion(std::make_unique<StopWhen>(
-      [passed_x_um](const coupling::CoupledSimulation& s) -> std::optional<std::string> {
+      [passed_x_um,
+       rear_out_lu](const coupling::CoupledSimulation& s) -> std::optional<std::string> {
         if (centroid_um(s).x() < passed_x_um) return std::nullopt;
-        return "the centroid passed x = " + format_significant(passed_x_um, 6) + " um";
+        for (const auto& position : s.cell(0).positions_lu()) {
+          if (position.x() <= rear_out_lu) return std::nullopt;
+        }
+        return "the centroid passed x = " + format_significant(passed_x_um, 6) +
+               " um and the whole cell left the narrow section";
       }));
   const double guard_lu =
       (lattice.outlet_x_um - lattice.grid_um.origin_um.x()) / lattice.grid_um.dx_um -
@@ -370,6 +413,9 @@ CapillaryRun run_capillary(const mesh::TriangleMesh& cell_mesh, const CapillaryP
   std::tie(run.narrow_start_um, run.narrow_end_um) =
       narrow_section_um(physics.wall, lattice, physics.wall_source);
   run.numbers = flow_numbers(physics, settings, inlet_diameter_um(physics.wall, lattice), model);
+  run.throat_diameter_um =
+      throat_diameter_um(physics.wall, lattice, run.narrow_start_um, run.narrow_end_um);
+  run.cell_diameter_um = vertex_extents(cell_mesh.positions_um).maxCoeff();
 
   auto fluid = capillary_fluid(physics.wall, lattice, physics.fluid,
                                physics.units.to_lattice(PhysicalUnit::velocity_m_per_s,
@@ -384,7 +430,7 @@ CapillaryRun run_capillary(const mesh::TriangleMesh& cell_mesh, const CapillaryP
                                          lattice.grid_um.origin_um);
   simulation.add_cell(std::move(model), cell.positions_um);
   add_repulsion(simulation, physics.wall, cell, settings);
-  NarrowSectionTransit transit(run.narrow_start_um, run.narrow_end_um);
+  CellTransits transit(run.narrow_start_um, run.narrow_end_um);
   simulation.add_observer({"capillary_transit", 1, TransitRecorder(run, transit)});
   const auto interval_steps = sample_interval_steps(physics.units, settings.sample_interval_s);
   SampleLog log{run.samples, {}};

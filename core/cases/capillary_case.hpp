@@ -93,9 +93,19 @@ struct CapillaryRun {
   double narrow_end_um = 0.0;
   std::size_t fluid_settling_steps = 0;
   std::vector<CapillarySample> samples;
-  std::optional<double> entry_time_s;
+  std::optional<double> entry_time_s;  // of the centroid (the paper's transit)
   std::optional<double> exit_time_s;
   std::optional<double> transit_time_s;
+  // The whole cell's transit, independent of the centroid: from its first vertex entering the
+  // narrow section (its front, the largest x, reaching the start) to its last vertex leaving it
+  // (its rear, the smallest x, passing the end).
+  std::optional<double> front_entry_time_s;
+  std::optional<double> rear_exit_time_s;
+  std::optional<double> whole_cell_transit_time_s;
+  // Confinement: the stress-free cell's largest extent over the throat's diameter.
+  double cell_diameter_um = 0.0;
+  double throat_diameter_um = 0.0;
+  double confinement() const { return cell_diameter_um / throat_diameter_um; }
   bool passed = false;
   double initial_deformation_index = 0.0;
   double peak_deformation_index = 0.0;

@@ -79,6 +79,29 @@ double inlet_diameter_um(const geometry::WallShape& shape, const CapillaryLattic
   return 2.0 * geometry::effective_radius_um(lattice.solid_mask, lattice.grid_um, 1);
 }
 
+double throat_diameter_um(const geometry::WallShape& shape, const CapillaryLattice& lattice,
+                          double start_um, double end_um) {
+  constexpr int kSamples = 1000;
+  double smallest_um = INFINITY;
+  if (shape.radius_at_um(start_um)) {
+    for (int k = 0; k <= kSamples; ++k) {
+      const double x_um = start_um + (end_um - start_um) * k / kSamples;
+      if (const auto radius_um = shape.radius_at_um(x_um)) {
+        smallest_um = std::min(smallest_um, 2.0 * *radius_um);
+      }
+    }
+    return smallest_um;
+  }
+  const auto& grid = lattice.grid_um;
+  for (int i = 1; i < grid.nx - 1; ++i) {
+    const double x_um = grid.origin_um.x() + i * grid.dx_um;
+    if (x_um < start_um || x_um > end_um) continue;
+    smallest_um =
+        std::min(smallest_um, 2.0 * geometry::effective_radius_um(lattice.solid_mask, grid, i));
+  }
+  return smallest_um;
+}
+
 std::pair<double, double> narrow_section_um(const geometry::WallShape& shape,
                                             const CapillaryLattice& lattice,
                                             std::string_view source) {

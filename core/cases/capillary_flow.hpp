@@ -47,6 +47,12 @@ std::unique_ptr<lattice::FluidSolver> capillary_fluid(const geometry::WallShape&
 // the circle with the first lumen slice's effective area.
 double inlet_diameter_um(const geometry::WallShape& shape, const CapillaryLattice& lattice);
 
+// Diameter of the throat: the smallest of the shape's own diameter over [start_um, end_um]
+// (sampled every 1/1000 of it) where it has one, else of the effective diameter of the lumen
+// slices there.
+double throat_diameter_um(const geometry::WallShape& shape, const CapillaryLattice& lattice,
+                          double start_um, double end_um);
+
 // The narrow section [start, end] along x: a built-in capillary's constriction; for any other
 // wall, the lumen slices whose effective area is below kNarrowAreaFraction of the smaller end
 // slice's. Throws InputError naming `source` if no slice is that narrow.

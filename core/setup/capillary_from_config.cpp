@@ -1,9 +1,11 @@
 #include "setup/capillary_from_config.hpp"
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "cases/capillary_observables.hpp"
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "geometry/wall_registry.hpp"
 #include "mesh/import.hpp"
 #include "setup/coupling_from_config.hpp"
@@ -97,6 +99,72 @@ cases::CapillaryPhysics capillary_physics_from(const config::Config& config,
           config.number("physics.plasma_density_kg_per_m3"),
           config.number("physics.plasma_kinematic_viscosity_m2_per_s"),
           config.number("physics.thermal_energy_J")};
+}
+
+CapillaryCompression capillary_compression_from(const config::Config& config,
+                                                const CapillaryWall& wall) {
+  CapillaryCompression compression;
+  const double velocity = capillary_settings_from(config, wall).mean_inlet_velocity_m_per_s;
+  const double viscosity = config.number("physics.plasma_kinematic_viscosity_m2_per_s");
+  compression.simulated_inlet_velocity_m_per_s = velocity;
+  compression.simulated_kinematic_viscosity_m2_per_s = viscosity;
+  const auto radius_um = wall.shape->radius_at_um(0.0);
+  if (!radius_um) return compression;
+  compression.physical_reynolds_number =
+      velocity * 2.0 * *radius_um * kMetresPerMicrometre / viscosity;
+  compression.simulated_reynolds_number = compression.physical_reynolds_number;
+  const double limit = config.number("capillary.max_reynolds_number");
+  if (!config.boolean("capillary.time_scale_compression") ||
+      compression.physical_reynolds_number >= limit) {
+    return compression;
+  }
+  compression.factor = std::sqrt(limit / compression.physical_reynolds_number);
+  compression.simulated_reynolds_number = limit;
+  compression.simulated_inlet_velocity_m_per_s = velocity * compression.factor;
+  compression.simulated_kinematic_viscosity_m2_per_s = viscosity / compression.factor;
+  return compression;
+}
+
+config::Config compressed_capillary_config(const config::Config& config, const CapillaryWall& wall,
+                                           const CapillaryCompression& compression) {
+  const double s = compression.factor;
+  if (s == 1.0) return config;
+  // The physical velocity first: a zero (the paper's Reynolds number) is resolved with the
+  // physical viscosity.
+  const double velocity = capillary_settings_from(config, wall).mean_inlet_velocity_m_per_s;
+  auto compressed = config
+                        .with("physics.plasma_kinematic_viscosity_m2_per_s",
+                              compression.simulated_kinematic_viscosity_m2_per_s)
+                        .with("capillary.inlet_velocity_m_per_s", velocity * s);
+  // A zero max_time_s is resolved from the (compressed) velocity; zero intervals mean "none".
+  for (const char* time : {"capillary.max_time_s", "capillary.sample_interval_s",
+                           "output.membrane_interval_s", "output.fluid_interval_s"}) {
+    compressed = compressed.with(time, config.number(time) / s);
+  }
+  return compressed;
+}
+
+void to_physical_units(cases::CapillaryRun& run, const CapillaryCompression& compression) {
+  const double s = compression.factor;
+  if (s == 1.0) return;
+  for (auto& sample : run.samples) {
+    sample.time_s *= s;
+    sample.velocity_x_m_per_s /= s;
+  }
+  for (auto* time :
+       {&run.entry_time_s, &run.exit_time_s, &run.transit_time_s, &run.front_entry_time_s,
+        &run.rear_exit_time_s, &run.whole_cell_transit_time_s}) {
+    if (*time) **time *= s;
+  }
+  run.peak_time_s *= s;
+  run.time_s *= s;
+  run.numbers.mean_inlet_velocity_m_per_s /= s;
+  run.numbers.reynolds_number /= s * s;
+  const std::string note =
+      " (times in this message are simulated ones: physical = " + format_number(s) +
+      " x simulated, capillary.time_scale_compression)";
+  if (!run.stop_reason.empty()) run.stop_reason += note;
+  if (!run.failure.empty()) run.failure += note;
 }
 
 }  // namespace rbcsim::setup

@@ -39,4 +39,32 @@ cases::CapillaryPhysics capillary_physics_from(const config::Config& config,
                                                const CapillaryWall& wall,
                                                const std::filesystem::path& run_directory);
 
+// Low-Reynolds time-scale compression (docs/physics.md, "Time-scale compression"). In Stokes
+// flow the cell's shapes and transit depend on the capillary number Ca = mu U / G_s, not on the
+// Reynolds number: simulating U s with the viscosity divided by s keeps Ca, multiplies the
+// Reynolds number by s^2 and, at the same relaxation time, dt by s, so a transit takes s^2 fewer
+// steps. With capillary.time_scale_compression the factor is the largest s >= 1 that keeps
+// Re = U D_inlet / nu at most capillary.max_reynolds_number; a wall file without a known inlet
+// diameter, or the switch off, gives s = 1. Results are converted back (times x s, velocities
+// / s) and result.json records s.
+struct CapillaryCompression {
+  double factor = 1.0;                     // s
+  double physical_reynolds_number = 0.0;   // U D_inlet / nu (0 when D_inlet is unknown)
+  double simulated_reynolds_number = 0.0;  // s^2 times it
+  double simulated_kinematic_viscosity_m2_per_s = 0.0;
+  double simulated_inlet_velocity_m_per_s = 0.0;
+};
+CapillaryCompression capillary_compression_from(const config::Config& config,
+                                                const CapillaryWall& wall);
+
+// The configuration the compressed run simulates: physics.plasma_kinematic_viscosity_m2_per_s
+// / s, capillary.inlet_velocity_m_per_s = the physical U times s, and capillary.max_time_s,
+// capillary.sample_interval_s and the output.*_interval_s divided by s. The identity for s = 1.
+config::Config compressed_capillary_config(const config::Config& config, const CapillaryWall& wall,
+                                           const CapillaryCompression& compression);
+
+// The run of the compressed configuration in physical units: every time x s, every velocity / s,
+// the Reynolds number the physical one.
+void to_physical_units(cases::CapillaryRun& run, const CapillaryCompression& compression);
+
 }  // namespace rbcsim::setup

@@ -22,7 +22,7 @@ using rbcsim::testing::result_schema_problems;
 using rbcsim::testing::run_rbcsim;
 using rbcsim::testing::ScratchDirectory;
 
-constexpr const char* kCoarseCell = "--set mesh.subdivisions=2 ";
+constexpr const char* kCoarseCell = "--set mesh.subdivisions=2 --set mesh.method=parametric ";
 
 using rbcsim::testing::relative_difference;
 

@@ -1,4 +1,4 @@
-// Contact patches on the shipped discocytes: where the tweezers hold the cell, and the forces.
+// Contact patches on the Evans-Fung discocytes: where the tweezers hold the cell, and the forces.
 #include "cases/contact_patches.hpp"
 
 #include <gtest/gtest.h>
@@ -18,13 +18,13 @@ using rbcsim::cases::prepare_stretch_cell;
 using rbcsim::cases::select_contact_patches;
 namespace support = rbcsim::cases::testing;
 
-class ShippedDiscocyte : public ::testing::TestWithParam<int> {};
+class EvansFungDiscocyte : public ::testing::TestWithParam<int> {};
 
 // The 2 um contact: every patch vertex lies within 1 um of its end, the two ends are the cell's
 // extremes along x, and the patch holds roughly the vertices of a 2 um disc (pi um^2 of a
 // membrane of ~134 um^2), the same number at both ends.
-TEST_P(ShippedDiscocyte, ContactDiameterPatchesAreSymmetricDiscsAtTheEnds) {
-  const auto cell = prepare_stretch_cell(support::shipped_discocyte(GetParam()), {});
+TEST_P(EvansFungDiscocyte, ContactDiameterPatchesAreSymmetricDiscsAtTheEnds) {
+  const auto cell = prepare_stretch_cell(support::evans_fung_discocyte(GetParam()), {});
   const auto& positions = cell.mesh.positions_um;
   const auto [low, high] =
       std::minmax_element(positions.begin(), positions.end(),
@@ -52,8 +52,8 @@ TEST_P(ShippedDiscocyte, ContactDiameterPatchesAreSymmetricDiscsAtTheEnds) {
   }
 }
 
-TEST_P(ShippedDiscocyte, ExtremeVerticesRuleTakesTheNLargestAndSmallestX) {
-  const auto mesh = prepare_stretch_cell(support::shipped_discocyte(GetParam()), {}).mesh;
+TEST_P(EvansFungDiscocyte, ExtremeVerticesRuleTakesTheNLargestAndSmallestX) {
+  const auto mesh = prepare_stretch_cell(support::evans_fung_discocyte(GetParam()), {}).mesh;
   const ContactSettings settings{.rule = "extreme-vertices", .extreme_vertex_count = 7};
   const auto patches = select_contact_patches(mesh.positions_um, settings);
   ASSERT_EQ(patches.positive_end.size(), 7u);
@@ -67,10 +67,10 @@ TEST_P(ShippedDiscocyte, ExtremeVerticesRuleTakesTheNLargestAndSmallestX) {
   for (const auto vertex : patches.negative_end) EXPECT_LE(mesh.positions_um[vertex].x(), xs[6]);
 }
 
-INSTANTIATE_TEST_SUITE_P(Levels, ShippedDiscocyte, ::testing::Values(3, 4));
+INSTANTIATE_TEST_SUITE_P(Levels, EvansFungDiscocyte, ::testing::Values(3, 4));
 
 TEST(ContactPatches, TweezerForcesSplitTheTotalEquallyAndCancel) {
-  const auto cell = prepare_stretch_cell(support::shipped_discocyte(3), {});
+  const auto cell = prepare_stretch_cell(support::evans_fung_discocyte(3), {});
   const auto forces = rbcsim::cases::tweezer_forces_pN(cell.mesh.vertex_count(), cell.patches, 40);
   Vec3 positive_sum = Vec3::Zero();
   Vec3 negative_sum = Vec3::Zero();
@@ -86,7 +86,7 @@ TEST(ContactPatches, TweezerForcesSplitTheTotalEquallyAndCancel) {
 }
 
 TEST(ContactPatches, PatchesThatWouldOverlapOrAnUnknownRuleAreInputErrors) {
-  const auto mesh = support::shipped_discocyte(3);
+  const auto mesh = support::evans_fung_discocyte(3);
   const auto message = [&mesh](const ContactSettings& settings) {
     try {
       prepare_stretch_cell(mesh, settings);

@@ -64,7 +64,7 @@ KinkSetup stretched_discocyte(const MembraneModel& model, const rbcsim::mesh::Tr
 class Distribution : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(Distribution, SignForceIsHalfTheJumpOfTheModelForceAcrossAFlatEdge) {
-  const auto mesh = rbcsim::cases::testing::shipped_discocyte(3);
+  const auto mesh = rbcsim::cases::testing::evans_fung_discocyte(3);
   const MembraneModel model(mesh, total_curvature_only(GetParam()));
   const auto setup = stretched_discocyte(model, mesh);
   const auto& edge = model.topology().edges()[setup.edge_index];
@@ -103,7 +103,7 @@ TEST_P(Distribution, SignForceIsHalfTheJumpOfTheModelForceAcrossAFlatEdge) {
 // The smoothed force is continuous across theta_j = 0: on either side of a flat edge it differs
 // by O(theta), where the model's jumps by 2 g_j; at |theta_j| >= eps it is the model's own.
 TEST_P(Distribution, SmoothedForceIsContinuousAcrossAFlatEdge) {
-  const auto mesh = rbcsim::cases::testing::shipped_discocyte(3);
+  const auto mesh = rbcsim::cases::testing::evans_fung_discocyte(3);
   const MembraneModel model(mesh, total_curvature_only(GetParam()));
   const auto setup = stretched_discocyte(model, mesh);
   const auto& edge = model.topology().edges()[setup.edge_index];

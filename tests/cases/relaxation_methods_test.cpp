@@ -31,7 +31,7 @@ struct Pulled {
 };
 
 Pulled pulled_discocyte(int level, double force_pN) {
-  auto cell = rbcsim::cases::prepare_stretch_cell(support::shipped_discocyte(level), {});
+  auto cell = rbcsim::cases::prepare_stretch_cell(support::evans_fung_discocyte(level), {});
   auto external =
       rbcsim::cases::tweezer_forces_pN(cell.mesh.vertex_count(), cell.patches, force_pN);
   return {std::move(cell), std::move(external)};

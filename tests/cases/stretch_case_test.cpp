@@ -94,7 +94,7 @@ void expect_linear_regime(const std::vector<support::ObservedState>& states,
 // The low-resolution curve, in the default suite (a few seconds): two small forces for the
 // linear regime, then Mills' range. One run, checked several ways.
 TEST(StretchCase, LowResolutionCurve) {
-  const auto cell = rbcsim::cases::prepare_stretch_cell(support::shipped_discocyte(3), {});
+  const auto cell = rbcsim::cases::prepare_stretch_cell(support::evans_fung_discocyte(3), {});
   const MembraneModel model(cell.mesh, MembraneParameters{});
   StretchSettings settings;
   settings.forces_pN = {0.0, 0.5, 1.0, 50.0, 100.0, 150.0, 200.0};
@@ -130,7 +130,7 @@ TEST(StretchCase, LowResolutionCurve) {
 // mode cannot hold a patch rigid and says so.
 TEST(StretchCase, RigidContactPatchTranslatesAsOneBody) {
   const rbcsim::cases::ContactSettings contact{.rigid = true};
-  const auto cell = rbcsim::cases::prepare_stretch_cell(support::shipped_discocyte(3), contact);
+  const auto cell = rbcsim::cases::prepare_stretch_cell(support::evans_fung_discocyte(3), contact);
   const MembraneModel model(cell.mesh, MembraneParameters{});
   StretchSettings settings;
   settings.contact = contact;
@@ -153,7 +153,7 @@ TEST(StretchCase, RigidContactPatchTranslatesAsOneBody) {
 }
 
 TEST(StretchCase, UnknownModeIsAnInputError) {
-  const auto cell = rbcsim::cases::prepare_stretch_cell(support::shipped_discocyte(3), {});
+  const auto cell = rbcsim::cases::prepare_stretch_cell(support::evans_fung_discocyte(3), {});
   const MembraneModel model(cell.mesh, MembraneParameters{});
   StretchSettings settings;
   settings.mode = "fluid-someday";
@@ -166,7 +166,7 @@ TEST(StretchCase, UnknownModeIsAnInputError) {
 // A force the relaxation cannot reach within its iteration budget stops the run with a message,
 // the failed point recorded (and not converged), the later forces not attempted.
 TEST(StretchCase, IterationBudgetExhaustedStopsTheRunLoudly) {
-  const auto cell = rbcsim::cases::prepare_stretch_cell(support::shipped_discocyte(3), {});
+  const auto cell = rbcsim::cases::prepare_stretch_cell(support::evans_fung_discocyte(3), {});
   const MembraneModel model(cell.mesh, MembraneParameters{});
   StretchSettings settings;
   settings.forces_pN = {0.0, 40.0, 80.0};

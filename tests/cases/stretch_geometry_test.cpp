@@ -57,7 +57,7 @@ TEST(StretchGeometry, FrameTurnsTheLongAxisOntoX) {
   const auto framed = cases::in_stretch_frame(mesh);
   EXPECT_NEAR(cases::axial_diameter_um(framed.positions_um), 8.0, 1e-9);
 
-  const auto discocyte = cases::testing::shipped_discocyte(3);
+  const auto discocyte = cases::testing::evans_fung_discocyte(3);
   const auto kept = cases::in_stretch_frame(discocyte);
   const Vec3 shift = kept.positions_um[0] - discocyte.positions_um[0];
   for (std::size_t i = 0; i < kept.vertex_count(); ++i) {

@@ -27,7 +27,7 @@ void expect_fluid_curve_on_the_quasi_static_one(int mesh_level,
                                                 double lattice_spacing_um) {
   const auto reference = cases::stretch_reference_from(rbcsim::io::read_csv_file(
       std::string(RBCSIM_SOURCE_DIR) + "/share/reference/mills2004_stretch.csv"));
-  const auto cell = cases::prepare_stretch_cell(cases::testing::shipped_discocyte(mesh_level), {});
+  const auto cell = cases::prepare_stretch_cell(cases::testing::evans_fung_discocyte(mesh_level), {});
   const rbcsim::membrane::MembraneModel model(cell.mesh, terms);
   cases::StretchSettings settings;
   for (const auto& measured : reference) settings.forces_pN.push_back(measured.force_pN);

@@ -40,7 +40,7 @@ TEST_P(ValidateStretch, MillsCurveAtThePapersResolution) {
   const auto reference = cases::stretch_reference_from(rbcsim::io::read_csv_file(
       std::string(RBCSIM_SOURCE_DIR) + "/share/reference/mills2004_stretch.csv"));
   const cases::ContactSettings contact{.rigid = GetParam().rigid_contact};
-  const auto cell = cases::prepare_stretch_cell(cases::testing::shipped_discocyte(4), contact);
+  const auto cell = cases::prepare_stretch_cell(cases::testing::evans_fung_discocyte(4), contact);
   MembraneParameters parameters;
   parameters.forces = GetParam().terms;
   const rbcsim::membrane::MembraneModel model(cell.mesh, parameters);

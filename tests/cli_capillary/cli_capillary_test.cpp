@@ -24,7 +24,8 @@ using rbcsim::testing::ScratchDirectory;
 
 // tests/cases/capillary_case_test.cpp explains these: a stiffened 162-vertex cell at Ca ~ 0.5.
 constexpr const char* kCoarse =
-    "--set mesh.subdivisions=2 --set lattice.spacing_um=1 --set membrane.k_link_kBT=112 "
+    "--set mesh.subdivisions=2 --set mesh.method=parametric --set lattice.spacing_um=1 --set "
+    "membrane.k_link_kBT=112 "
     "--set membrane.k_area_kBT=80 --set membrane.k_bend_kBT=800 --set membrane.k_volume_kBT=320 "
     "--set membrane.k_area_difference_kBT=4800 --set membrane.k_total_curvature_kBT=1600 "
     "--set membrane.vertex_force_cap_pN=2000 --set capillary.throat_diameter_um=9 "

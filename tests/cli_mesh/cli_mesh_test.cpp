@@ -60,13 +60,15 @@ TEST_F(CliMesh, GenerateWritesStlAndReportsJson) {
 // A shape the level does not resolve (mesh::resolution_notice) is still written, with a notice
 // on stderr that leaves stdout's JSON clean; a resolved one prints nothing there.
 TEST_F(CliMesh, GenerateTellsOfUnresolvedSpiculesOnStderr) {
-  const auto coarse = run("mesh generate --shape echinocyte-III --subdivisions 2 --json");
+  const auto coarse =
+      run("mesh generate --method parametric --shape echinocyte-III --subdivisions 2 --json");
   ASSERT_EQ(coarse.exit_code, 0) << coarse.err;
   EXPECT_EQ(nlohmann::json::parse(coarse.out)["report"]["counts"]["vertices"], 162);
   EXPECT_EQ(coarse.err.rfind("rbcsim: notice: echinocyte-III at mesh.subdivisions = 2 has a ", 0),
             0u)
       << coarse.err;
-  const auto smooth = run("mesh generate --shape discocyte --subdivisions 2 --json");
+  const auto smooth =
+      run("mesh generate --method parametric --shape discocyte --subdivisions 2 --json");
   ASSERT_EQ(smooth.exit_code, 0) << smooth.err;
   EXPECT_EQ(smooth.err, "");
 }

@@ -23,7 +23,7 @@ using rbcsim::testing::run_rbcsim;
 using rbcsim::testing::ScratchDirectory;
 
 constexpr const char* kCoarseRun =
-    "shear --set mesh.subdivisions=3 --set lattice.spacing_um=1 "
+    "shear --set mesh.subdivisions=3 --set mesh.method=parametric --set lattice.spacing_um=1 "
     "--set shear.max_reynolds_number=0.4 --set shear.width_diameters=1.6 "
     "--set shear.gap_diameters=2 --max-strain 1 ";
 

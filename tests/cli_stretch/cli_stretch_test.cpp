@@ -21,7 +21,7 @@ using rbcsim::testing::read_text;
 using rbcsim::testing::run_rbcsim;
 using rbcsim::testing::ScratchDirectory;
 
-constexpr const char* kCoarseCell = "--set mesh.subdivisions=2 ";
+constexpr const char* kCoarseCell = "--set mesh.subdivisions=2 --set mesh.method=parametric ";
 
 // A long run logged to a file asks for progress with --verbose: whole lines on stderr (the first
 // at once, then at most one per 30 s), never on stdout.

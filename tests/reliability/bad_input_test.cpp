@@ -111,9 +111,10 @@ class BadInput : public ::testing::Test {
   void expect_stretch_refused(const fs::path& config, const fs::path& named,
                               const std::string& problem) const {
     const auto run_dir = scratch_.path() / "run";
-    expect_refused("stretch --set mesh.subdivisions=1 --forces 0 --config '" + config.string() +
-                       "' --output '" + run_dir.string() + "'",
-                   named, problem);
+    expect_refused(
+        "stretch --set mesh.subdivisions=1 --set mesh.method=parametric --forces 0 --config '" +
+            config.string() + "' --output '" + run_dir.string() + "'",
+        named, problem);
     EXPECT_FALSE(fs::exists(run_dir));
   }
 
@@ -320,27 +321,31 @@ TEST_F(BadInput, ACommandOptionsBadValueIsNamedAsThatOption) {
 TEST_F(BadInput, ShearBoxTooSmallForTheCellAndTheKernel) {
   // dx = 4 um: a 4-node (16 um) box along x holds 7.82 + 2 x 2 x 4 um with phi4 only.
   expect_run_refused(
-      "shear --rates 500 --set mesh.subdivisions=2 --set lattice.spacing_um=4 "
+      "shear --rates 500 --set mesh.subdivisions=2 --set mesh.method=parametric --set "
+      "lattice.spacing_um=4 "
       "--set ibm.kernel=phi4",
       "shear box",
       "the cell does not fit the domain along x: 7.82 um of cell plus 16 um of "
       "clearance (2 lattice spacings per side) exceed the domain's 16 um");
   // phi2, dx = 0.5 um: 1.05 diameters (17 nodes, 8.5 um) are less than 7.82 + 2 x 0.5 um.
-  expect_run_refused("shear --rates 500 --set mesh.subdivisions=2 --set shear.width_diameters=1.05",
-                     "shear box", "does not fit the domain along x");
+  expect_run_refused(
+      "shear --rates 500 --set mesh.subdivisions=2 --set mesh.method=parametric --set "
+      "shear.width_diameters=1.05",
+      "shear box", "does not fit the domain along x");
 }
 
 TEST_F(BadInput, FluidStretchBoxTooSmallForTheCellAndTheKernel) {
   // dx = 2 um, margin 0.5 um: 5 nodes (10 um) across y, less than 7.82 + 2 x 2 um (phi2).
   expect_run_refused(
-      "stretch --mode fluid --forces 0 --set mesh.subdivisions=1 --set lattice.spacing_um=2 "
+      "stretch --mode fluid --forces 0 --set mesh.subdivisions=1 --set mesh.method=parametric "
+      "--set lattice.spacing_um=2 "
       "--set stretch.fluid.box_margin_um=0.5",
       "stretch.fluid.box_margin_um", "the cell does not fit the domain along y");
 }
 
 TEST_F(BadInput, CapillaryLumenTooNarrowForTheCell) {  // the capillary's own check, before settling
   expect_run_refused(
-      "capillary --set mesh.subdivisions=2 --set lattice.spacing_um=1 "
+      "capillary --set mesh.subdivisions=2 --set mesh.method=parametric --set lattice.spacing_um=1 "
       "--set mesh.discocyte.radius_um=8",
       "capillary.release_gap_um", "the released cell does not fit in the lumen");
 }

@@ -40,9 +40,12 @@ using rbcsim::testing::checkpoint_only_when_interrupted;
 using rbcsim::testing::InterruptScope;
 
 // The coarse capillary of capillary_case_test.cpp (dx = 1 um, the 162-vertex cell).
-const std::vector<std::string> kCoarseAssignments = {
-    "mesh.subdivisions=2", "lattice.spacing_um=1", "capillary.throat_diameter_um=9",
-    "capillary.inlet_velocity_m_per_s=0.014", "capillary.fluid_tolerance=1e-5"};
+const std::vector<std::string> kCoarseAssignments = {"mesh.subdivisions=2",
+                                                     "mesh.method=parametric",
+                                                     "lattice.spacing_um=1",
+                                                     "capillary.throat_diameter_um=9",
+                                                     "capillary.inlet_velocity_m_per_s=0.014",
+                                                     "capillary.fluid_tolerance=1e-5"};
 
 // The coarse capillary run for kTotalSteps steps with a sample every kSampleSteps.
 class CoarseCapillary {

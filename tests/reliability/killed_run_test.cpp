@@ -42,7 +42,8 @@ TEST(KilledRun, EveryFileWithItsFinalNameIsComplete) {
   const auto run_dir = scratch.path() / "run";
   // The coarse capillary of capillary_case_test.cpp (dx = 1 um, the 162-vertex cell).
   const std::string arguments =
-      "capillary --quiet --threads 1 --set mesh.subdivisions=2 --set lattice.spacing_um=1"
+      "capillary --quiet --threads 1 --set mesh.subdivisions=2 --set mesh.method=parametric --set "
+      "lattice.spacing_um=1"
       " --set capillary.throat_diameter_um=9 --set capillary.inlet_velocity_m_per_s=0.014"
       " --set capillary.fluid_tolerance=1e-5 --set output.membrane_interval_s=1e-12"
       " --set output.fluid_interval_s=1e-12 --output '" +

@@ -117,7 +117,8 @@ TEST(StretchResume, InterruptedCurveResumesToTheStraightCurve) {
 
 // The binary's settings: the coarse stretch above.
 const std::string kSettings =
-    " --quiet --threads 1 --mode fluid --forces 0,10 --set mesh.subdivisions=2"
+    " --quiet --threads 1 --mode fluid --forces 0,10 --set mesh.subdivisions=2 --set "
+    "mesh.method=parametric"
     " --set lattice.spacing_um=2 --set stretch.fluid.kinematic_viscosity_m2_per_s=3.6667e-7"
     " --set stretch.fluid.steady_relative_rate_per_s=50 --set "
     "stretch.fluid.steady_check_interval_s=1e-4"
@@ -185,7 +186,7 @@ TEST(StretchResume, SigintWritesTheForcesDoneSoFarAndACheckpoint) {
   EXPECT_EQ(rbcsim::testing::run_rbcsim_signalled_once(
                 run_dir / "shapes" / "stretch_000.vtp",
                 "stretch --quiet --threads 1 --mode fluid --forces 0:40/41"
-                " --set mesh.subdivisions=2 --set lattice.spacing_um=2"
+                " --set mesh.subdivisions=2 --set mesh.method=parametric --set lattice.spacing_um=2"
                 " --set stretch.fluid.kinematic_viscosity_m2_per_s=3.6667e-7"
                 " --set stretch.fluid.max_time_per_force_s=1e-3 --output '" +
                     run_dir.string() + "'"),
@@ -230,7 +231,9 @@ TEST(StretchResume, TheQuasiStaticModeRefusesCheckpointOptions) {
                                     "--resume '" + run_dir.string() + "'"}) {
     SCOPED_TRACE(option);
     const auto refused = rbcsim::testing::run_rbcsim(
-        "stretch --quiet --forces 0 --set mesh.subdivisions=2 " + option, scratch.path());
+        "stretch --quiet --forces 0 --set mesh.subdivisions=2 --set mesh.method=parametric " +
+            option,
+        scratch.path());
     EXPECT_EQ(refused.exit_code, 2);
     EXPECT_EQ(std::count(refused.err.begin(), refused.err.end(), '\n'), 1) << refused.err;
     EXPECT_NE(refused.err.find(option.substr(0, option.find(' '))), std::string::npos)

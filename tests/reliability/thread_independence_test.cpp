@@ -87,7 +87,7 @@ TEST(ThreadIndependence, CapillaryCommandIsBitIdenticalWithOneAndTwoThreads) {
   const rbcsim::testing::ScratchDirectory scratch;
   const PassiveOpenMpWaiting passive;
   const std::string settings =
-      " --quiet --set mesh.subdivisions=2 --set lattice.spacing_um=1"
+      " --quiet --set mesh.subdivisions=2 --set mesh.method=parametric --set lattice.spacing_um=1"
       " --set capillary.throat_diameter_um=9 --set capillary.inlet_velocity_m_per_s=0.014"
       " --set capillary.fluid_tolerance=1e-5 --set capillary.max_time_s=5e-6"
       " --set capillary.sample_interval_s=6e-7";

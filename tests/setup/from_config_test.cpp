@@ -54,9 +54,10 @@ TEST(CellFromConfig, GeneratesTheMorphologyAtTheConfiguredLevel) {
 
 TEST(CellFromConfig, EchinocyteSpiculeCountReachesTheGenerator) {
   const int spicules = 44;
-  const auto cell = rbcsim::setup::cell_mesh_from(resolve_config(
-      {.morphology = "echinocyte-III",
-       .assignments = {"mesh.echinocyte.spicule_count=" + std::to_string(spicules)}}));
+  const auto cell = rbcsim::setup::cell_mesh_from(
+      resolve_config({.morphology = "echinocyte-III",
+                      .assignments = {"mesh.method=parametric", "mesh.echinocyte.spicule_count=" +
+                                                                    std::to_string(spicules)}}));
   std::vector<double> radii;
   for (const auto& p : cell.mesh.positions_um) radii.push_back(p.norm());
   std::nth_element(radii.begin(), radii.begin() + radii.size() / 2, radii.end());
@@ -77,7 +78,8 @@ TEST(CellFromConfig, EchinocyteSpiculeCountReachesTheGenerator) {
 // file is the user's own and is not compared with anything.
 TEST(CellFromConfig, AGeneratedShapeTheMeshDoesNotResolveGetsARunNotice) {
   const auto config =
-      resolve_config({.morphology = "echinocyte-III", .assignments = {"mesh.subdivisions=3"}});
+      resolve_config({.morphology = "echinocyte-III",
+                      .assignments = {"mesh.subdivisions=3", "mesh.method=parametric"}});
   auto coarse = rbcsim::setup::cell_mesh_from(config);
   EXPECT_TRUE(coarse.run_notices.empty());
   rbcsim::setup::add_resolution_notice(coarse, config);
@@ -106,7 +108,9 @@ TEST(CellFromConfig, ReadsTheConfiguredMeshFile) {
 // The paper's 2562-vertex cell (edges ~0.25 um) on dx = 0.5 um gets the notice; on dx = 0.25 um,
 // or the 642-vertex cell (edges ~0.5 um) on dx = 0.5 um, does not.
 TEST(CellFromConfig, EdgesUnderThreeQuartersOfASpacingGetANotice) {
-  auto paper_cell = rbcsim::setup::cell_mesh_from(resolve_config({}));
+  // The parametric (Evans-Fung) cell, whose mean edge the figure below is.
+  auto paper_cell =
+      rbcsim::setup::cell_mesh_from(resolve_config({.assignments = {"mesh.method=parametric"}}));
   rbcsim::setup::add_edge_spacing_notice(paper_cell, 0.25);
   EXPECT_TRUE(paper_cell.run_notices.empty());
   rbcsim::setup::add_edge_spacing_notice(paper_cell, 0.5);
@@ -115,8 +119,8 @@ TEST(CellFromConfig, EdgesUnderThreeQuartersOfASpacingGetANotice) {
             std::string::npos)
       << paper_cell.run_notices[0];
 
-  auto coarse_cell =
-      rbcsim::setup::cell_mesh_from(resolve_config({.assignments = {"mesh.subdivisions=3"}}));
+  auto coarse_cell = rbcsim::setup::cell_mesh_from(
+      resolve_config({.assignments = {"mesh.subdivisions=3", "mesh.method=parametric"}}));
   rbcsim::setup::add_edge_spacing_notice(coarse_cell, 0.5);
   EXPECT_TRUE(coarse_cell.run_notices.empty());
 }
