@@ -6,14 +6,15 @@
 #include "command_registry.hpp"
 #include "common_options.hpp"
 #include "config/config.hpp"
+#include "config/reference_page.hpp"
 #include "config/schema.hpp"
 
 namespace rbcsim::cli::config_command {
 namespace {
 
 void attach_config_command(CLI::App& application) {
-  auto* command =
-      application.add_subcommand("config", "Show the resolved configuration or its schema");
+  auto* command = application.add_subcommand(
+      "config", "Show the resolved configuration, its schema or its reference page");
   command->require_subcommand(1);
 
   auto* show = command->add_subcommand(
@@ -28,6 +29,11 @@ void attach_config_command(CLI::App& application) {
   auto* schema = command->add_subcommand(
       "schema", "Print the JSON Schema of config files (shipped as schemas/config.schema.json)");
   schema->callback([] { std::cout << config::config_schema_text(); });
+
+  auto* reference = command->add_subcommand(
+      "reference",
+      "Print the Markdown reference of every option (shipped as docs/configuration.md)");
+  reference->callback([] { std::cout << config::configuration_reference_markdown(); });
 }
 
 const bool registered = register_command({"config", 90, attach_config_command});

@@ -1,4 +1,6 @@
 #include "config/schema.hpp"
+#include "config/option_table.hpp"
+#include "config/reference_page.hpp"
 
 #include <gtest/gtest.h>
 
@@ -26,6 +28,25 @@ TEST(ConfigSchema, ShippedFileIsUpToDate) {
   EXPECT_TRUE(shipped.str() == rbcsim::config::config_schema_text())
       << "schemas/config.schema.json differs from the option table; refresh it with\n"
          "  rbcsim config schema > schemas/config.schema.json";
+}
+
+TEST(ConfigReference, ShippedPageIsUpToDate) {
+  std::ifstream stream(std::string(RBCSIM_SOURCE_DIR) + "/docs/configuration.md");
+  std::stringstream shipped;
+  shipped << stream.rdbuf();
+  EXPECT_TRUE(shipped.str() == rbcsim::config::configuration_reference_markdown())
+      << "docs/configuration.md differs from the option table; refresh it with\n"
+         "  rbcsim config reference > docs/configuration.md";
+}
+
+TEST(ConfigReference, ListsEveryOptionOnce) {
+  const auto page = rbcsim::config::configuration_reference_markdown();
+  for (const auto& option : rbcsim::config::option_table().options()) {
+    const auto row = "| `" + option.path + "` |";
+    const auto at = page.find(row);
+    EXPECT_NE(at, std::string::npos) << option.path;
+    EXPECT_EQ(page.find(row, at + 1), std::string::npos) << option.path;
+  }
 }
 
 TEST(ConfigSchema, DescribesEveryOptionWithTypeUnitDefaultAndRange) {
