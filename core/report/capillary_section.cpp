@@ -21,8 +21,31 @@ constexpr std::string_view kTimeSeriesFile = "capillary_timeseries.csv";
 constexpr std::array<std::string_view, 3> kPaperTransitOrder{"discocyte", "echinocyte-III",
                                                              "stomatocyte-II"};
 
+// The time series of the run: capillary_timeseries.csv, or the file result.json names (an
+// ensemble's first release, orientation_0/capillary_timeseries.csv).
+std::string timeseries_file(const RunDirectory& run) {
+  const auto files = run.result.find("files");
+  if (files != run.result.end() && files->contains("timeseries") &&
+      (*files)["timeseries"].is_string()) {
+    return (*files)["timeseries"].get<std::string>();
+  }
+  return std::string(kTimeSeriesFile);
+}
+
+// An ensemble of releases (--orientations): its result.json object, or nullptr.
+const nlohmann::json* ensemble_of(const RunDirectory& run) {
+  const auto ensemble = run.result.find("capillary_ensemble");
+  return ensemble == run.result.end() ? nullptr : &*ensemble;
+}
+
+// Mean and standard deviation of an ensemble observable.
+std::pair<double, double> ensemble_spread(const nlohmann::json& ensemble, const char* key) {
+  const auto& statistics = ensemble.at("statistics").at(key);
+  return {statistics.at("mean").get<double>(), statistics.at("standard_deviation").get<double>()};
+}
+
 std::vector<svg::PlotPoint> deformation_over_time(const RunDirectory& run) {
-  const auto table = run.csv(std::string(kTimeSeriesFile));
+  const auto table = run.csv(timeseries_file(run));
   const auto time_s = table.numbers("time_s");
   const auto deformation_index = table.numbers("deformation_index");
   std::vector<svg::PlotPoint> points;
@@ -31,8 +54,26 @@ std::vector<svg::PlotPoint> deformation_over_time(const RunDirectory& run) {
   return points;
 }
 
+// An ensemble some of whose releases passed: its statistics stand for the run even when another
+// release failed (the run's status), which the ensemble table says.
+bool has_passed_releases(const RunDirectory& run) {
+  const auto* ensemble = ensemble_of(run);
+  return ensemble && ensemble->at("passed").get<int>() > 0;
+}
+
+// The centroid's transit: an ensemble's mean, else the run's.
 double transit_time_s(const RunDirectory& run) {
+  if (const auto* ensemble = ensemble_of(run))
+    return ensemble_spread(*ensemble, "transit_time_s").first;
   return run.section().at("transit_time_s").number();
+}
+
+// An ensemble's standard deviation of the transit; 0 for a single release.
+double transit_spread_s(const RunDirectory& run) {
+  if (const auto* ensemble = ensemble_of(run)) {
+    return ensemble_spread(*ensemble, "transit_time_s").second;
+  }
+  return 0.0;
 }
 
 // A failed or interrupted run with a capillary object and its time series: drawn up to its stop.
@@ -40,7 +81,7 @@ bool has_deformation_trace(const RunDirectory& run) {
   if (run.succeeded()) return true;
   const auto section = run.result.find(run.command);
   return section != run.result.end() && section->contains("geometry") &&
-         std::filesystem::exists(run.directory / kTimeSeriesFile);
+         std::filesystem::exists(run.directory / timeseries_file(run));
 }
 
 // The tube the run went through: a built-in geometry's name or the wall file's.
@@ -74,14 +115,30 @@ nlohmann::json transit_order(RunList runs, Section& section) {
     if (present != known_order.end()) paper_order.emplace_back(morphology);
   }
   const bool agrees = known_order == paper_order;
+  // With ensembles, a step of the order is a finding only when the gap exceeds twice the larger
+  // of the two spreads over orientations.
+  std::string robustness;
+  bool robust = true;
+  for (std::size_t i = 1; i < runs.size(); ++i) {
+    const double gap = transit_time_s(*runs[i]) - transit_time_s(*runs[i - 1]);
+    const double spread = std::max(transit_spread_s(*runs[i]), transit_spread_s(*runs[i - 1]));
+    if (spread == 0.0) continue;
+    const bool clear = gap > 2.0 * spread;
+    robust = robust && clear;
+    robustness += " " + runs[i - 1]->morphology + " < " + runs[i]->morphology + ": gap " +
+                  format_significant(gap, 3) + " s against twice the spread " +
+                  format_significant(2.0 * spread, 3) + " s (" +
+                  (clear ? "a finding" : "not resolved") + ").";
+  }
   section.blocks.emplace_back(
       Paragraph{sentence + ". The paper finds discocyte < echinocyte III < stomatocyte II: " +
-                (agrees ? "same order." : "different order.")});
+                (agrees ? "same order." : "different order.") + robustness});
   return {{"terms", terms},
           {"geometry", geometry},
           {"order", order},
           {"paper_order", paper_order},
-          {"agrees_with_paper", agrees}};
+          {"agrees_with_paper", agrees},
+          {"resolved_by_ensemble_spread", robust}};
 }
 
 // Per set of membrane terms and tube in which every morphology ran once and at least two ran: the
@@ -161,6 +218,38 @@ std::vector<std::string> capillary_labels(const RunList& runs) {
   });
 }
 
+// The ensembles among `runs`: per run, the mean and spread of each transit and of the peak DI
+// over its releases, and the confinement.
+nlohmann::json ensemble_table(const RunList& runs, const std::vector<std::string>& labels,
+                              Section& section) {
+  auto summaries = nlohmann::json::array();
+  std::vector<std::vector<std::string>> rows;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto* ensemble = ensemble_of(*runs[i]);
+    if (!ensemble) continue;
+    auto spread_text = [&](const char* key) {
+      const auto [mean, deviation] = ensemble_spread(*ensemble, key);
+      return format_significant(mean) + " +- " + format_significant(deviation, 2);
+    };
+    const double confinement = runs[i]->section().at("confinement").number();
+    rows.push_back({labels[i],
+                    std::to_string(ensemble->at("passed").get<int>()) + " / " +
+                        std::to_string(ensemble->at("orientations").get<int>()),
+                    spread_text("transit_time_s"), spread_text("whole_cell_transit_time_s"),
+                    spread_text("peak_deformation_index"), format_significant(confinement)});
+    summaries.push_back(
+        {{"run", labels[i]}, {"ensemble", *ensemble}, {"confinement", confinement}});
+  }
+  if (!rows.empty()) {
+    section.blocks.emplace_back(
+        Table{"Release orientations (mean +- standard deviation over the "
+              "releases that passed)",
+              {"run", "passed", "transit (s)", "whole-cell transit (s)", "peak DI", "confinement"},
+              rows});
+  }
+  return summaries;
+}
+
 }  // namespace
 
 Section build_capillary_section(const RunList& all_runs) {
@@ -180,7 +269,7 @@ Section build_capillary_section(const RunList& all_runs) {
     deformation.series.push_back({label_with_status(run, traced_labels[i]),
                                   deformation_over_time(run), svg::palette_colour(i),
                                   svg::Marker::none, true, !run.succeeded()});
-    if (!run.succeeded()) continue;
+    if (!run.succeeded() && !has_passed_releases(run)) continue;
     runs.push_back(&run);
     labels.push_back(traced_labels[i]);
     colours.push_back(svg::palette_colour(i));
@@ -190,7 +279,8 @@ Section build_capillary_section(const RunList& all_runs) {
   std::vector<LabelledObject> rows;
   auto run_summaries = nlohmann::json::array();
   for (std::size_t i = 0; i < runs.size(); ++i) {
-    transit.bars.push_back({labels[i], transit_time_s(*runs[i]), colours[i]});
+    transit.bars.push_back(
+        {labels[i], transit_time_s(*runs[i]), colours[i], transit_spread_s(*runs[i])});
     const auto capillary = runs[i]->section();
     rows.push_back({labels[i], capillary.object()});
     run_summaries.push_back(run_summary(*runs[i]));
@@ -203,11 +293,13 @@ Section build_capillary_section(const RunList& all_runs) {
     section.blocks.emplace_back(Figure{svg::render_bar_chart(transit),
                                        "Time to cross the narrow section of the capillary."});
   }
+  const auto ensembles = ensemble_table(runs, labels, section);
   const auto orders = transit_orders(runs, section);
   const auto peaks = peak_deformation_by_terms(runs, section);
   section.blocks.emplace_back(table_of_objects("Capillary results", "run", rows));
   section.blocks.emplace_back(headline_table(runs, labels));
   section.summary = {{"runs", run_summaries},
+                     {"ensembles", ensembles},
                      {"transit_time_order", orders},
                      {"peak_deformation_index_by_terms", peaks}};
   return section;

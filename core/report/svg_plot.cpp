@@ -309,7 +309,7 @@ std::string render_line_plot(const LinePlot& plot) {
 std::string render_bar_chart(const BarChart& chart) {
   Extent extent;
   extent.include(0.0);  // bars start at zero
-  for (const auto& bar : chart.bars) extent.include(bar.value);
+  for (const auto& bar : chart.bars) extent.include(bar.value + bar.error);
   const Scale x{ticks_for(extent), kBarChartLeft, kBarChartRight};
   const double bottom = kTitleHeight + static_cast<double>(chart.bars.size()) * kBarRowHeight + 6;
   const double height = bottom + kAxisHeight + 4;
@@ -331,8 +331,19 @@ std::string render_bar_chart(const BarChart& chart) {
                     attribute("y", row_top + 18), attribute("width", value_x - start),
                     attribute("height", kBarThickness), "/>\n");
     }
-    svg += text_element(value_x + 6, row_top + 30, format_significant(bar.value),
-                        " class=\"bar-value\"");
+    std::string value_text = format_significant(bar.value);
+    if (bar.error > 0.0 && std::isfinite(bar.value)) {
+      const double low = x.pixel(bar.value - bar.error);
+      const double high = x.pixel(bar.value + bar.error);
+      const double middle = row_top + 18 + kBarThickness / 2;
+      svg += concat("<g class=\"error-bar\"", attribute("stroke", kAxisColour), ">",
+                    line_element(low, middle, high, middle, ""),
+                    line_element(low, middle - 4, low, middle + 4, ""),
+                    line_element(high, middle - 4, high, middle + 4, ""), "</g>\n");
+      value_x = std::max(value_x, high);
+      value_text += " +- " + format_significant(bar.error, 2);
+    }
+    svg += text_element(value_x + 6, row_top + 30, value_text, " class=\"bar-value\"");
     svg += "</g>\n";
   }
   svg += line_element(kBarChartLeft, bottom, kBarChartRight, bottom,

@@ -39,6 +39,8 @@ struct Bar {
   std::string label;
   double value;
   std::string colour;
+  // An ensemble's spread: a whisker value +- error (0: none), printed beside the value.
+  double error = 0.0;
 };
 
 struct BarChart {

@@ -105,9 +105,10 @@ void add_compression_options(OptionTable& table) {
                     "capillary number, so the same shapes and transit) up to "
                     "capillary.max_reynolds_number; results are converted back to physical time.");
   table
-      .add_number("capillary.max_reynolds_number", "", 0.1,
-                  "Largest Reynolds number U D_inlet / nu the compression may reach (Stokes flow "
-                  "needs << 1).")
+      .add_number("capillary.max_reynolds_number", "", 0.02,
+                  "Largest Reynolds number U D_inlet / nu the compression may reach: Stokes flow "
+                  "needs << 1, and the explicit membrane step moves s^2 further per step "
+                  "(docs/physics.md, time-scale compression).")
       .above(0.0);
 }
 
