@@ -39,7 +39,9 @@ RunList runs_of(const std::vector<RunDirectory>& runs, const std::string& comman
 std::vector<Section> build_sections(const std::vector<RunDirectory>& runs) {
   RunList all;
   for (const auto& run : runs) all.push_back(&run);
-  std::vector<Section> sections{build_runs_section(all)};
+  // The verdict first, then the experiments in the paper's order (Figs. 8, 9-11, 13, 18), then
+  // the details of every run.
+  std::vector<Section> sections;
   for (const auto& experiment : experiment_sections()) {
     const auto selected = runs_of(runs, std::string(experiment.command));
     if (!selected.empty()) sections.push_back(experiment.build(selected));
@@ -56,6 +58,8 @@ std::vector<Section> build_sections(const std::vector<RunDirectory>& runs) {
     sections.push_back(
         build_other_section(other_commands[i], i + 1, runs_of(runs, other_commands[i])));
   }
+  sections.insert(sections.begin(), build_verdict_section(all, sections));
+  sections.push_back(build_runs_section(all));
   return sections;
 }
 

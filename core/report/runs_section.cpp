@@ -1,5 +1,8 @@
 // Every run: what ran, how (membrane terms, threads, version), for how long, the notices it
 // started with, and its full configuration folded under a <details>.
+#include <algorithm>
+#include <utility>
+
 #include "report/markup.hpp"
 #include "report/sections.hpp"
 
@@ -48,11 +51,21 @@ Section build_runs_section(const RunList& runs) {
               {}};
   for (const auto* run : runs) table.rows.push_back(run_row(*run));
   section.blocks.emplace_back(std::move(table));
+  // One line per distinct notice, listing the runs that got it (a main job's nine shear and
+  // capillary runs often share one).
+  std::vector<std::pair<std::string, std::vector<std::string>>> notices;
   for (const auto* run : runs) {
     for (const auto& notice : run->notices) {
-      section.blocks.emplace_back(
-          Paragraph{"Notice of " + run->directory.generic_string() + ": " + notice + "."});
+      auto same = std::find_if(notices.begin(), notices.end(),
+                               [&notice](const auto& entry) { return entry.first == notice; });
+      if (same == notices.end()) same = notices.insert(notices.end(), {notice, {}});
+      same->second.push_back(run->directory.generic_string());
     }
+  }
+  for (const auto& [notice, directories] : notices) {
+    std::string who;
+    for (const auto& directory : directories) who += (who.empty() ? "" : ", ") + directory;
+    section.blocks.emplace_back(Paragraph{"Notice of " + who + ": " + notice + "."});
   }
 
   for (const auto* run : runs) {

@@ -25,6 +25,9 @@ struct ExperimentSection {
 std::span<const ExperimentSection> experiment_sections();
 
 Section build_runs_section(const RunList& runs);
+// The comparisons of every experiment's runs with the paper and the reference data, from the
+// runs and the experiment sections already built (their summaries).
+Section build_verdict_section(const RunList& runs, const std::vector<Section>& sections);
 Section build_calibrate_section(const RunList& runs);
 Section build_stretch_section(const RunList& runs);
 Section build_shear_section(const RunList& runs);

@@ -121,6 +121,25 @@ TEST(ReportInputs, RunNoticesAreShownUnderRuns) {
   }
 }
 
+// A notice several runs got is one line naming them all, not one line per run.
+TEST(ReportInputs, ANoticeSharedByRunsIsOneLineNamingThem) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto first = rbcsim::testing::capillary_run("echinocyte-III", 1.6e-3, 2.1);
+  auto second = rbcsim::testing::capillary_run("discocyte", 1.4e-3, 2.2);
+  first.notices = {"shared notice", "own notice"};
+  second.notices = {"shared notice"};
+  const auto documents = build_report(read_run_directories(
+      {write_run(scratch.path() / "a", first), write_run(scratch.path() / "b", second)}));
+  ASSERT_EQ(parse_xml(documents.html).error, "");
+  const auto a = (scratch.path() / "a").generic_string();
+  const auto b = (scratch.path() / "b").generic_string();
+  const auto shared = "Notice of " + a + ", " + b + ": shared notice.";
+  const auto at = documents.html.find(shared);
+  EXPECT_NE(at, std::string::npos);
+  EXPECT_EQ(documents.html.find("shared notice", at + shared.size()), std::string::npos);
+  EXPECT_NE(documents.html.find("Notice of " + a + ": own notice."), std::string::npos);
+}
+
 // A capillary run that stopped is drawn up to where it stopped (where a cell fails is worth
 // seeing), dashed and marked, but it has no transit: no bar, no row, no summary entry. One that
 // stopped before writing its time series is only listed.

@@ -55,10 +55,23 @@ class ReportOfStandardRuns : public ::testing::Test {
   XmlDocument page_;
 };
 
-TEST_F(ReportOfStandardRuns, HasOneSectionPerExperimentAfterTheRuns) {
+// The verdict first, the experiments in the paper's order, the runs' details last.
+TEST_F(ReportOfStandardRuns, OpensWithTheVerdictThenOneSectionPerExperimentThenTheRuns) {
   std::vector<std::string> ids;
   for (const auto i : page_.find("section")) ids.push_back(page_.elements[i].attribute("id"));
-  EXPECT_EQ(ids, (std::vector<std::string>{"runs", "calibrate", "stretch", "shear", "capillary"}));
+  EXPECT_EQ(ids, (std::vector<std::string>{"verdict", "calibrate", "stretch", "shear", "capillary",
+                                           "runs"}));
+  // Every experiment of the standard runs with a reference has a row: the paper's moduli, Mills'
+  // points, the capillary's DI after the throat.
+  const auto& verdict = documents_.summary.at("verdict");
+  auto has_row = [&verdict](const std::string& start) {
+    return std::any_of(verdict.begin(), verdict.end(), [&start](const auto& row) {
+      return row.at("comparison").template get<std::string>().starts_with(start);
+    });
+  };
+  EXPECT_TRUE(has_row("calibrate hexagonal"));
+  EXPECT_TRUE(has_row("stretch "));
+  EXPECT_TRUE(has_row("capillary "));
   EXPECT_EQ(page_.find("script").size(), 0u);  // no JavaScript
   EXPECT_EQ(page_.find("link").size(), 0u);    // no external style sheet
   EXPECT_EQ(page_.find("img").size(), 0u);     // no external image
