@@ -22,8 +22,12 @@ struct XmlElement {
     return found == attributes.end() ? "" : found->second;
   }
   bool has_class(std::string_view name_of_class) const {
-    const auto classes = " " + attribute("class") + " ";
-    return classes.find(" " + std::string(name_of_class) + " ") != std::string::npos;
+    // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string chains.
+    std::string classes(" ");
+    classes.append(attribute("class")).append(" ");
+    std::string wanted(" ");
+    wanted.append(name_of_class).append(" ");
+    return classes.find(wanted) != std::string::npos;
   }
 };
 
