@@ -134,8 +134,8 @@ TEST(ReportInputs, ANoticeSharedByRunsIsOneLineNamingThem) {
   const auto a = (scratch.path() / "a").generic_string();
   const auto b = (scratch.path() / "b").generic_string();
   // Appended piecewise: GCC 12 warns falsely (-Wrestrict) on "literal" + std::string chains.
-  std::string shared = "Notice of ";
-  shared.append(a).append(", ").append(b).append(": shared notice.");
+  std::string shared = "Notice of ";  // the runs in the report's order: by morphology
+  shared.append(b).append(", ").append(a).append(": shared notice.");
   const auto at = documents.html.find(shared);
   EXPECT_NE(at, std::string::npos);
   EXPECT_EQ(documents.html.find("shared notice", at + shared.size()), std::string::npos);
