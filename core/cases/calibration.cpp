@@ -8,10 +8,10 @@
 #include <string_view>
 #include <utility>
 
-#include "cases/named_table.hpp"
 #include "cases/stretch_output.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/registry.hpp"
 #include "mesh/inspection.hpp"
 
 namespace rbcsim::cases {
@@ -72,9 +72,8 @@ double relative_error(double achieved, double target) {
 // mu = k_l mu_link + k_a mu_area, K = k_l K_link + k_a K_area: one 2x2 solve.
 void fit_link_area(const mesh::TriangleMesh&, Calibration& calibration) {
   const auto& targets = calibration.settings.targets;
-  const auto target = find_named<TargetModuliKind>(kTargetModuliKinds, targets.moduli,
-                                                   "calibrate.target.moduli", "target moduli")
-                          .convert(targets);
+  const auto target =
+      find_entry(kTargetModuliKinds, targets.moduli, "calibrate.target.moduli").convert(targets);
   const auto& unit = calibration.unit_patch;
   const Eigen::Matrix2d response{{unit.link_shear_uN_per_m, unit.area_term_shear_uN_per_m},
                                  {unit.link_area_uN_per_m, unit.area_term_area_uN_per_m}};
@@ -325,27 +324,23 @@ nlohmann::ordered_json paper_json() {
 
 }  // namespace
 
-std::vector<std::string> calibration_fit_names() { return names_of<CalibrationFit>(kFits); }
-std::vector<std::string> patch_edge_rule_names() {
-  return names_of<PatchEdgeRule>(kPatchEdgeRules);
-}
-std::vector<std::string> target_moduli_names() {
-  return names_of<TargetModuliKind>(kTargetModuliKinds);
-}
+std::vector<std::string> calibration_fit_names() { return entry_names(kFits); }
+std::vector<std::string> patch_edge_rule_names() { return entry_names(kPatchEdgeRules); }
+std::vector<std::string> target_moduli_names() { return entry_names(kTargetModuliKinds); }
 
 Calibration run_calibration(const mesh::TriangleMesh& cell,
                             const membrane::MembraneParameters& parameters,
                             const CalibrationSettings& settings) {
   for (const auto& name : settings.fits) {
-    find_named<CalibrationFit>(kFits, name, "calibrate.fits", "fit");
+    find_entry(kFits, name, "calibrate.fits");
   }
   Calibration calibration;
   calibration.settings = settings;
   calibration.configured = parameters;
   calibration.fitted = parameters;
-  calibration.patch_edge_um = find_named<PatchEdgeRule>(kPatchEdgeRules, settings.patch_edge,
-                                                        "calibrate.patch_edge", "patch edge rule")
-                                  .edge_um(cell, parameters);
+  calibration.patch_edge_um =
+      find_entry(kPatchEdgeRules, settings.patch_edge, "calibrate.patch_edge")
+          .edge_um(cell, parameters);
   measure(cell, calibration);
   for (const auto& fit : kFits) {
     if (std::find(settings.fits.begin(), settings.fits.end(), fit.name) != settings.fits.end()) {

@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "cases/capillary_flow.hpp"
-#include "cases/named_table.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/registry.hpp"
 #include "geometry/wall_measures.hpp"
 #include "membrane/membrane_model.hpp"
 #include "mesh/geometry.hpp"
@@ -389,12 +389,12 @@ bool settle_fluid(lattice::FluidSolver& fluid, const CapillarySettings& settings
 }  // namespace
 
 std::vector<std::string> cell_axis_names() {
-  return names_of(std::span<const CellAxis>(kCellAxes));
+  return entry_names(std::span<const CellAxis>(kCellAxes));
 }
 
 mesh::TriangleMesh oriented_cell(mesh::TriangleMesh mesh, std::string_view cell_axis) {
-  const auto& axis = find_named(std::span<const CellAxis>(kCellAxes), cell_axis,
-                                "capillary.cell_axis", "cell axis");
+  const auto& axis =
+      find_entry(std::span<const CellAxis>(kCellAxes), cell_axis, "capillary.cell_axis");
   const Eigen::Matrix3d rotation = Eigen::AngleAxisd(axis.angle_rad, axis.rotation_axis).matrix();
   for (auto& position : mesh.positions_um) position = rotation * position;
   return mesh;

@@ -5,8 +5,8 @@
 #include <iterator>
 #include <numeric>
 
-#include "cases/named_table.hpp"
 #include "common/errors.hpp"
+#include "common/registry.hpp"
 
 namespace rbcsim::cases {
 namespace {
@@ -63,12 +63,11 @@ bool share_a_vertex(const std::vector<std::int32_t>& a, const std::vector<std::i
 
 }  // namespace
 
-std::vector<std::string> contact_rule_names() { return names_of<ContactRule>(kContactRules); }
+std::vector<std::string> contact_rule_names() { return entry_names(kContactRules); }
 
 ContactPatches select_contact_patches(std::span<const Vec3> positions_um,
                                       const ContactSettings& settings) {
-  const auto& rule =
-      find_named<ContactRule>(kContactRules, settings.rule, "stretch.contact.rule", "contact rule");
+  const auto& rule = find_entry(kContactRules, settings.rule, "stretch.contact.rule");
   ContactPatches patches{rule.select(positions_um, settings, +1.0),
                          rule.select(positions_um, settings, -1.0)};
   if (patches.positive_end.empty() || patches.negative_end.empty()) {

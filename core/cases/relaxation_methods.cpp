@@ -3,7 +3,7 @@
 #include <array>
 
 #include "cases/fire_relaxation.hpp"
-#include "cases/named_table.hpp"
+#include "common/registry.hpp"
 
 namespace rbcsim::cases {
 namespace {
@@ -20,14 +20,10 @@ constexpr std::array<RelaxationEntry, 2> kRelaxationMethods{{
 
 }  // namespace
 
-std::vector<std::string> relaxation_method_names() {
-  return names_of<RelaxationEntry>(kRelaxationMethods);
-}
+std::vector<std::string> relaxation_method_names() { return entry_names(kRelaxationMethods); }
 
 RelaxationMethod find_relaxation_method(std::string_view name) {
-  return find_named<RelaxationEntry>(kRelaxationMethods, name, "stretch.quasi_static.relaxation",
-                                     "relaxation")
-      .relax;
+  return find_entry(kRelaxationMethods, name, "stretch.quasi_static.relaxation").relax;
 }
 
 }  // namespace rbcsim::cases

@@ -9,10 +9,10 @@
 #include <memory>
 #include <span>
 
-#include "cases/named_table.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/interrupt.hpp"
+#include "common/registry.hpp"
 #include "common/state_archive.hpp"
 #include "common/thread_count_scope.hpp"
 #include "common/wall_clock.hpp"
@@ -65,8 +65,7 @@ constexpr ShearBoundary kBoundaries[] = {
 };
 
 const ShearBoundary& find_boundary(std::string_view name) {
-  return find_named(std::span<const ShearBoundary>(kBoundaries), name, "shear.boundary",
-                    "shear boundary");
+  return find_entry(std::span<const ShearBoundary>(kBoundaries), name, "shear.boundary");
 }
 
 int nodes_for(double length_um, double dx_um) {
@@ -269,7 +268,7 @@ std::string shear_rate_directory(std::size_t rate_index) {
 }
 
 std::vector<std::string> shear_boundary_names() {
-  return names_of(std::span<const ShearBoundary>(kBoundaries));
+  return entry_names(std::span<const ShearBoundary>(kBoundaries));
 }
 
 std::unique_ptr<lattice::FluidSolver> shear_fluid(const ShearBox& box,

@@ -4,9 +4,9 @@
 #include <utility>
 
 #include "cases/fluid_stretch.hpp"
-#include "cases/named_table.hpp"
 #include "cases/quasi_static_stretch.hpp"
 #include "cases/stretch_geometry.hpp"
+#include "common/registry.hpp"
 
 namespace rbcsim::cases {
 namespace {
@@ -30,11 +30,11 @@ StretchCell prepare_stretch_cell(mesh::TriangleMesh mesh, const ContactSettings&
   return {std::move(framed), std::move(patches)};
 }
 
-std::vector<std::string> stretch_mode_names() { return names_of<StretchMode>(kStretchModes); }
+std::vector<std::string> stretch_mode_names() { return entry_names(kStretchModes); }
 
 StretchRun run_stretch(const membrane::MembraneModel& model, const StretchCell& cell,
                        const StretchSettings& settings, const StretchObserver& observer) {
-  const auto& mode = find_named<StretchMode>(kStretchModes, settings.mode, "stretch.mode", "mode");
+  const auto& mode = find_entry(kStretchModes, settings.mode, "stretch.mode");
   return mode.run(model, cell, settings, observer);
 }
 

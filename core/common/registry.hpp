@@ -1,4 +1,5 @@
-// The ONE mechanism by which rbcsim chooses a variant by name: force terms, hinge distributions,
+// The ONE mechanism by which rbcsim chooses a variant by name (find_entry, entry_names; and the
+// Registry for the kinds that code may extend at run time): force terms, hinge distributions,
 // membrane and fluid kernels, collision models, wall rules, IBM kernels and integrators, wall
 // shapes, cell shapes, shape methods, relaxation methods, experiment modes. A Registry holds
 // entries (structs with a `name` and a one-line `description`) in registration order; config
@@ -22,6 +23,36 @@
 #include "common/format.hpp"
 
 namespace rbcsim {
+
+// The names of a table of entries (anything with a `name`), in order.
+template <class Entries>
+std::vector<std::string> entry_names(const Entries& entries) {
+  std::vector<std::string> names;
+  for (const auto& entry : entries) names.emplace_back(entry.name);
+  return names;
+}
+
+// "a, b, c".
+template <class Entries>
+std::string joined_entry_names(const Entries& entries, std::string_view separator = ", ") {
+  std::string joined;
+  for (const auto& entry : entries) {
+    if (!joined.empty()) joined.append(separator);
+    joined.append(entry.name);
+  }
+  return joined;
+}
+
+// The entry called `name`; InputError(key, "\"x\" is not one of a, b, c") otherwise. The one
+// lookup of every named variant, compile-time tables and Registry alike.
+template <class Entries>
+const auto& find_entry(const Entries& entries, std::string_view name, std::string_view key) {
+  for (const auto& entry : entries) {
+    if (entry.name == name) return entry;
+  }
+  throw InputError(std::string(key),
+                   in_quotes(name) + " is not one of " + joined_entry_names(entries));
+}
 
 template <class Entry>
 class Registry {
@@ -60,26 +91,16 @@ class Registry {
 
   // Throws InputError(key, "\"x\" is not one of a, b, c").
   const Entry& find(std::string_view name, std::string_view key) const {
-    if (const auto* entry = find_if_known(name)) return *entry;
-    throw InputError(std::string(key), in_quotes(name) + " is not one of " + joined_names());
+    return find_entry(entries_, name, key);
   }
 
   std::span<const Entry> entries() const { return entries_; }
 
-  std::vector<std::string> names() const {
-    std::vector<std::string> result;
-    for (const auto& entry : entries_) result.emplace_back(entry.name);
-    return result;
-  }
+  std::vector<std::string> names() const { return entry_names(entries_); }
 
   // "a, b, c", for help texts.
   std::string joined_names(std::string_view separator = ", ") const {
-    std::string result;
-    for (const auto& entry : entries_) {
-      if (!result.empty()) result.append(separator);
-      result.append(entry.name);
-    }
-    return result;
+    return joined_entry_names(entries_, separator);
   }
 
   // "a (what a is), b (what b is)", for help texts that explain each choice.

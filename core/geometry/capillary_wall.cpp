@@ -1,4 +1,5 @@
 #include "geometry/capillary_wall.hpp"
+#include "common/registry.hpp"
 
 #include <algorithm>
 #include <array>
@@ -79,9 +80,9 @@ std::span<const NarrowingProfile> narrowing_profiles() { return kNarrowingProfil
 
 CapillaryWall::CapillaryWall(const CapillaryParameters& parameters, std::string_view source)
     : parameters_(with_defaults(parameters, source)),
-      narrowing_(find_named(narrowing_profiles(), parameters.profile, "constriction profile",
-                            parameter_path(source, "profile"))
-                     .narrowing) {}
+      narrowing_(
+          find_entry(narrowing_profiles(), parameters.profile, parameter_path(source, "profile"))
+              .narrowing) {}
 
 double CapillaryWall::constriction_start_um() const {
   return *parameters_.constriction_centre_um - *parameters_.constriction_length_um / 2.0;

@@ -18,12 +18,6 @@ void require_positive_length(double value_um, std::string_view source, std::stri
   }
 }
 
-void throw_unknown_name(std::string_view source, std::string_view what, std::string_view name,
-                        std::string_view known) {
-  throw InputError(std::string(source), "unknown " + std::string(what) + " \"" + std::string(name) +
-                                            "\" (known: " + std::string(known) + ")");
-}
-
 ParameterReader::ParameterReader(const nlohmann::json& parameters, std::string json_path)
     : parameters_(parameters.is_null() ? nlohmann::json::object() : parameters),
       json_path_(std::move(json_path)) {

@@ -18,23 +18,6 @@ std::string parameter_path(std::string_view source, std::string_view key);
 // Throws rbcsim::InputError naming source.key unless value is finite and > 0.
 void require_positive_length(double value_um, std::string_view source, std::string_view key);
 
-// The error of find_named, kept out of the header's template.
-[[noreturn]] void throw_unknown_name(std::string_view source, std::string_view what,
-                                     std::string_view name, std::string_view known);
-
-// The row of `table` (rows with a `name`) called `name`; otherwise throws rbcsim::InputError
-// "source: unknown <what> "name" (known: a, b, c)".
-template <class Row>
-const Row& find_named(std::span<const Row> table, std::string_view name, std::string_view what,
-                      std::string_view source) {
-  std::string known;
-  for (const auto& row : table) {
-    if (row.name == name) return row;
-    known += (known.empty() ? "" : ", ") + std::string(row.name);
-  }
-  throw_unknown_name(source, what, name, known);
-}
-
 // Reads the keys of one JSON object of shape parameters and remembers which it read, so that a
 // misspelt key is reported instead of silently ignored.
 class ParameterReader {

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "common/errors.hpp"
+#include "common/registry.hpp"
 #include "geometry/capillary_wall.hpp"
 #include "geometry/channel_wall.hpp"
 #include "geometry/stl_wall.hpp"
@@ -119,10 +120,18 @@ constexpr std::array kWallShapeKinds{
 
 std::span<const WallShapeKind> wall_shape_kinds() { return kWallShapeKinds; }
 
+std::vector<std::string> paper_capillary_names() {
+  std::vector<std::string> names;
+  for (const auto& kind : kWallShapeKinds) {
+    if (kind.name.starts_with("paper-")) names.emplace_back(kind.name);
+  }
+  return names;
+}
+
 std::unique_ptr<WallShape> make_wall_shape(std::string_view name, const nlohmann::json& parameters,
                                            std::string_view json_path,
                                            const MeshLoader& load_mesh) {
-  const auto& kind = find_named(wall_shape_kinds(), name, "wall shape", json_path);
+  const auto& kind = find_entry(wall_shape_kinds(), name, json_path);
   ParameterReader reader(parameters, std::string(json_path));
   auto shape = kind.read(reader, load_mesh);
   reader.reject_unread_keys();

@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "geometry/shape_parameters.hpp"
 #include "geometry/wall_shape.hpp"
@@ -27,6 +28,10 @@ struct WallShapeKind {
 };
 
 std::span<const WallShapeKind> wall_shape_kinds();
+
+// The kinds that are the paper's own capillaries (named "paper-..."), in table order: the choices
+// of capillary.geometry.
+std::vector<std::string> paper_capillary_names();
 
 // Builds the shape `name` from a JSON object of its parameters (keys as in its summary; null = no
 // parameters). Throws rbcsim::InputError naming json_path for an unknown shape, and

@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "ibm/find_by_name.hpp"
+#include "common/registry.hpp"
 
 namespace rbcsim::ibm {
 namespace {
@@ -59,7 +59,7 @@ static_assert(std::ranges::all_of(kKernels,
 std::span<const DeltaKernel> delta_kernels() { return kKernels; }
 
 const DeltaKernel& find_delta_kernel(std::string_view name) {
-  return find_by_name<DeltaKernel>(kKernels, name, "ibm.kernel");
+  return find_entry(kKernels, name, "ibm.kernel");
 }
 
 }  // namespace rbcsim::ibm

@@ -3,7 +3,7 @@
 #include <array>
 #include <stdexcept>
 
-#include "ibm/find_by_name.hpp"
+#include "common/registry.hpp"
 
 namespace rbcsim::ibm {
 namespace {
@@ -51,7 +51,7 @@ void advance_points(std::span<Vec3> positions_lu, std::span<const Vec3> velociti
 std::span<const PointAdvanceScheme> point_advance_schemes() { return kSchemes; }
 
 const PointAdvanceScheme& find_point_advance_scheme(std::string_view name) {
-  return find_by_name<PointAdvanceScheme>(kSchemes, name, "ibm.point_advance");
+  return find_entry(kSchemes, name, "ibm.point_advance");
 }
 
 void PointAdvancer::advance(std::span<Vec3> positions_lu, std::span<const Vec3> velocities_lu,

@@ -1,6 +1,6 @@
 #include "lattice/boundaries.hpp"
 
-#include "lattice/named_variants.hpp"
+#include "common/registry.hpp"
 
 #include <algorithm>
 
@@ -47,7 +47,7 @@ std::size_t link_key(std::size_t node, int direction) {
 std::span<const WallRule> wall_rules() { return kWallRules; }
 
 const WallRule& find_wall_rule(std::string_view name) {
-  return find_variant<WallRule>(kWallRules, name, "lattice.wall_rule", "wall rule");
+  return find_entry(kWallRules, name, "lattice.wall_rule");
 }
 
 BoundaryMap::BoundaryMap(std::size_t node_count) : kinds_(node_count, 0) {}

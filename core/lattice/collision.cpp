@@ -1,7 +1,7 @@
 #include "lattice/collision.hpp"
 
 #include "common/errors.hpp"
-#include "lattice/named_variants.hpp"
+#include "common/registry.hpp"
 
 #include <array>
 #include <string>
@@ -31,15 +31,15 @@ std::span<const CollisionModel> collision_models() { return kCollisionModels; }
 
 RelaxationRates relaxation_rates(std::string_view model, const CollisionParameters& parameters) {
   if (!(parameters.tau > 0.5)) {
-    throw InputError("lattice.tau", "must exceed 1/2 (zero or negative viscosity), got " +
-                                        std::to_string(parameters.tau));
+    throw InputError(
+        "lattice.relaxation_time",
+        "must exceed 1/2 (zero or negative viscosity), got " + std::to_string(parameters.tau));
   }
   if (!(parameters.magic_parameter > 0.0)) {
-    throw InputError("lattice.magic_parameter",
+    throw InputError("lattice.trt_magic",
                      "must be positive, got " + std::to_string(parameters.magic_parameter));
   }
-  return find_variant<CollisionModel>(kCollisionModels, model, "lattice.collision", "model")
-      .rates(parameters);
+  return find_entry(kCollisionModels, model, "lattice.collision").rates(parameters);
 }
 
 }  // namespace rbcsim::lattice

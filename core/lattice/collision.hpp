@@ -32,7 +32,7 @@ struct CollisionModel {
 std::span<const CollisionModel> collision_models();
 
 // The rates of the named model. Throws rbcsim::InputError naming `lattice.collision` (and the known
-// names) for an unknown model, `lattice.tau` for tau <= 1/2, `lattice.magic_parameter` for
+// names) for an unknown model, `lattice.relaxation_time` for tau <= 1/2, `lattice.trt_magic` for
 // Lambda <= 0.
 RelaxationRates relaxation_rates(std::string_view model, const CollisionParameters& parameters);
 

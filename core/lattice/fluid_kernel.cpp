@@ -1,7 +1,7 @@
 #include "lattice/fluid_kernel.hpp"
 
 #include "common/errors.hpp"
-#include "lattice/named_variants.hpp"
+#include "common/registry.hpp"
 #include "lattice/optimised_kernel.hpp"
 #include "lattice/reference_kernel.hpp"
 
@@ -30,7 +30,7 @@ void check_lees_edwards_planes(const LatticeSetup& setup) {
     for (int x = 0; x < grid.nx(); ++x) {
       for (const int y : {0, grid.ny() - 1}) {
         if (!setup.boundaries.is_fluid(grid.index(x, y, z))) {
-          throw InputError("lattice.lees_edwards",
+          throw InputError("shear.boundary",
                            "the sliding planes y = 0 and y = ny - 1 must hold fluid only, node (" +
                                std::to_string(x) + ", " + std::to_string(y) + ", " +
                                std::to_string(z) + ") is not fluid");
@@ -71,7 +71,7 @@ FluidArrays::FluidArrays(std::size_t node_count)
 std::span<const FluidKernelEntry> fluid_kernels() { return kFluidKernels; }
 
 const FluidKernelEntry& find_fluid_kernel(std::string_view name) {
-  return find_variant<FluidKernelEntry>(kFluidKernels, name, "lattice.kernel", "kernel");
+  return find_entry(kFluidKernels, name, "lattice.kernel");
 }
 
 std::unique_ptr<FluidKernel> make_fluid_kernel(std::string_view name, const LatticeSetup& setup) {

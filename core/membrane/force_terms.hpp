@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "common/registry.hpp"
 #include "membrane/force_law.hpp"
 #include "membrane/force_term.hpp"
 #include "membrane/hinge.hpp"
@@ -121,6 +122,9 @@ struct ForceTermEntry {
   std::unique_ptr<ForceTerm> (*make)(const MembraneParameters& parameters,
                                      const ReferenceState& reference);
 };
+// The registry (common/registry.hpp): the six terms above, and any a program or a test adds
+// (docs/architecture.md, "Adding a force term"). force_term_table() is its entries.
+Registry<ForceTermEntry>& force_term_registry();
 std::span<const ForceTermEntry> force_term_table();
 // The terms of `names` (registered names, in the order given), made by their factories.
 std::vector<std::unique_ptr<ForceTerm>> make_force_terms(std::span<const std::string_view> names,

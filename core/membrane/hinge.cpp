@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "common/errors.hpp"
+#include "common/registry.hpp"
 
 namespace rbcsim::membrane {
 namespace {
@@ -66,13 +66,7 @@ void distribute_as_gradient(const Hinge& hinge, const HingeLoad& load,
 std::span<const HingeDistributionEntry> hinge_distribution_table() { return kDistributions; }
 
 HingeDistribution find_hinge_distribution(std::string_view name) {
-  std::string known;
-  for (const auto& entry : kDistributions) {
-    if (entry.name == name) return entry.distribute;
-    known += (known.empty() ? "" : ", ") + std::string(entry.name);
-  }
-  throw InputError("membrane.distribution",
-                   "unknown force distribution '" + std::string(name) + "' (known: " + known + ")");
+  return find_entry(kDistributions, name, "membrane.distribution").distribute;
 }
 
 }  // namespace rbcsim::membrane

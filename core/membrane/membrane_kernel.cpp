@@ -4,6 +4,7 @@
 #include <string>
 
 #include "common/errors.hpp"
+#include "common/registry.hpp"
 
 namespace rbcsim::membrane {
 namespace {
@@ -18,13 +19,7 @@ constexpr MembraneKernelEntry kKernels[] = {
 std::span<const MembraneKernelEntry> membrane_kernel_table() { return kKernels; }
 
 const MembraneKernelEntry& find_membrane_kernel(std::string_view name) {
-  std::string known;
-  for (const auto& entry : kKernels) {
-    if (entry.name == name) return entry;
-    known += (known.empty() ? "" : ", ") + std::string(entry.name);
-  }
-  throw InputError("membrane.kernel",
-                   "unknown force kernel '" + std::string(name) + "' (known: " + known + ")");
+  return find_entry(kKernels, name, "membrane.kernel");
 }
 
 void require_finite_forces(std::size_t first_non_finite, std::size_t vertex_count) {

@@ -5,26 +5,18 @@
 #include <string>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "membrane/force_terms.hpp"
 
 namespace rbcsim::membrane {
 namespace {
 
 void require_known_term_names(const std::vector<std::string>& names) {
-  std::string known;
-  for (const auto& entry : force_term_table()) {
-    known += (known.empty() ? "" : ", ") + std::string(entry.name);
-  }
   for (std::size_t i = 0; i < names.size(); ++i) {
-    const auto& table = force_term_table();
-    if (std::none_of(table.begin(), table.end(),
-                     [&](const ForceTermEntry& entry) { return entry.name == names[i]; })) {
-      throw InputError("membrane.forces",
-                       "unknown force term '" + names[i] + "' (known: " + known + ")");
-    }
+    force_term_registry().find(names[i], "membrane.forces");
     if (std::find(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(i), names[i]) !=
         names.begin() + static_cast<std::ptrdiff_t>(i)) {
-      throw InputError("membrane.forces", "force term '" + names[i] + "' is listed twice");
+      throw InputError("membrane.forces", in_quotes(names[i]) + " is listed twice");
     }
   }
 }

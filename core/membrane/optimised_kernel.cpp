@@ -37,6 +37,8 @@
 #include <string>
 #include <vector>
 
+#include "common/errors.hpp"
+#include "common/format.hpp"
 #include "membrane/force_terms.hpp"
 #include "membrane/hinge.hpp"
 #include "membrane/membrane_kernel.hpp"
@@ -52,7 +54,10 @@ using namespace optimised;
 Term term_of(std::string_view name) {
   const auto* found = std::find(kTermNames.begin(), kTermNames.end(), name);
   if (found == kTermNames.end()) {
-    throw std::logic_error("the optimised membrane kernel has no term '" + std::string(name) + "'");
+    // A term registered beyond the six (docs/architecture.md, "Adding a force term") runs in the
+    // reference kernel until it is fused here.
+    throw InputError("membrane.kernel", "\"optimised\" fuses only the built-in terms, not " +
+                                            in_quotes(name) + "; use \"reference\"");
   }
   return static_cast<Term>(found - kTermNames.begin());
 }

@@ -5,6 +5,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/registry.hpp"
 #include "mesh/inspection.hpp"
 
 namespace rbcsim::mesh {
@@ -26,25 +27,14 @@ const std::array kCellShapes = {
 };
 
 const CellShapeEntry& find_cell_shape(std::string_view shape_name) {
-  for (const auto& entry : kCellShapes) {
-    if (entry.name == shape_name) return entry;
-  }
-  throw InputError("--shape", "unknown cell shape '" + std::string(shape_name) +
-                                  "' (known: " + cell_shape_names() + ")");
+  return find_entry(kCellShapes, shape_name, "--shape");
 }
 
 }  // namespace
 
 std::span<const CellShapeEntry> cell_shapes() { return kCellShapes; }
 
-std::string cell_shape_names() {
-  std::string names;
-  for (const auto& entry : kCellShapes) {
-    if (!names.empty()) names += ", ";
-    names += entry.name;
-  }
-  return names;
-}
+std::string cell_shape_names() { return joined_entry_names(kCellShapes); }
 
 TriangleMesh generate_cell(std::string_view shape_name, int subdivisions,
                            const CellShapeParameters& parameters) {

@@ -20,6 +20,7 @@ lattice::FluidParameters fluid_parameters_from(const config::Config& config) {
   parameters.collision_parameters.tau = config.number("lattice.relaxation_time");
   parameters.collision_parameters.magic_parameter = config.number("lattice.trt_magic");
   parameters.wall_rule = config.string("lattice.wall_rule");
+  parameters.kernel = config.string("lattice.kernel");
   return parameters;
 }
 

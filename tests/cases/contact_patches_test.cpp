@@ -102,8 +102,7 @@ TEST(ContactPatches, PatchesThatWouldOverlapOrAnUnknownRuleAreInputErrors) {
             "stretch.contact.extreme_vertex_count: the two contact patches overlap: too large for "
             "this cell");
   EXPECT_EQ(message({.rule = "glue"}),
-            "stretch.contact.rule: unknown contact rule \"glue\" (known: contact-diameter, "
-            "extreme-vertices)");
+            "stretch.contact.rule: \"glue\" is not one of contact-diameter, extreme-vertices");
 }
 
 }  // namespace

@@ -58,6 +58,20 @@ TEST(CommonOptions, UsageErrors) {
   EXPECT_THROW(ParsedCommand("run --set"), CLI::ParseError);
 }
 
+// A refused count reads like every other rbcsim complaint (option: "value" problem), not as
+// CLI11's "Value 0 not in range 0.000000 to 1.79769e+308".
+TEST(CommonOptions, AThreadCountBelowOneIsRefusedInRbcsimsWording) {
+  for (const std::string value : {"0", "-2", "many", "2.5"}) {
+    try {
+      ParsedCommand("run --threads " + value);
+      FAIL() << "--threads " << value << " was accepted";
+    } catch (const CLI::ParseError& error) {
+      EXPECT_EQ(std::string(error.what()),
+                "--threads: \"" + value + "\" is not a whole number >= 1");
+    }
+  }
+}
+
 TEST(CommonOptions, ResolvesTheConfiguration) {
   const ParsedCommand parsed("run --morphology stomatocyte-II --set membrane.k_link_kBT=12");
   const auto config = rbcsim::cli::resolve_config(parsed.options);

@@ -72,7 +72,7 @@ TEST(ConfigSchema, DescribesEveryOptionWithTypeUnitDefaultAndRange) {
   EXPECT_EQ(forces["uniqueItems"], true);
   EXPECT_EQ(forces["items"]["enum"].size(), 6u);
   EXPECT_EQ(schema["properties"]["morphology"]["enum"],
-            json({"discocyte", "stomatocyte-II", "echinocyte-III"}));
+            json({"stomatocyte-II", "discocyte", "echinocyte-III"}));
   for (const auto& option : rbcsim::config::option_table().options()) {
     EXPECT_TRUE(schema.contains(schema_pointer(option.path))) << option.path;
   }

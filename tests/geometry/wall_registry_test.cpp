@@ -85,11 +85,10 @@ TEST(WallRegistry, ErrorsNameTheJsonPath) {
                 .find("capillary.wall.length_um: must be a positive length"),
             std::string::npos);
   EXPECT_NE(wall_shape_error("paper-validation", {{"profile", "step"}})
-                .find("capillary.wall.profile: unknown constriction profile \"step\" (known: "
-                      "cosine, linear)"),
+                .find("capillary.wall.profile: \"step\" is not one of cosine, linear"),
             std::string::npos);
   EXPECT_NE(
-      wall_shape_error("pipe", json::object()).find("capillary.wall: unknown wall shape \"pipe\""),
+      wall_shape_error("pipe", json::object()).find("capillary.wall: \"pipe\" is not one of"),
       std::string::npos);
 }
 

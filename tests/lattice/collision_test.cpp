@@ -50,11 +50,11 @@ TEST(CollisionModels, BadInputNamesTheKey) {
             std::string::npos);
   EXPECT_NE(input_error_message([] {
               relaxation_rates("bgk", {0.5, 0.1});
-            }).find("lattice.tau"),
+            }).find("lattice.relaxation_time"),
             std::string::npos);
   EXPECT_NE(input_error_message([] {
               relaxation_rates("trt", {1.0, 0.0});
-            }).find("lattice.magic_parameter"),
+            }).find("lattice.trt_magic"),
             std::string::npos);
   FluidParameters parameters;
   parameters.kernel = "fastest";

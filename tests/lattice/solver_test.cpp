@@ -45,7 +45,7 @@ TEST(FluidSolver, SlidingPlanesMustBeFluid) {
     solver.step();
     FAIL() << "a wall on a sliding plane must be refused";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("lattice.lees_edwards"), std::string::npos);
+    EXPECT_NE(std::string(error.what()).find("shear.boundary"), std::string::npos);
   }
 }
 

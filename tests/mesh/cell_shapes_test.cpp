@@ -277,7 +277,7 @@ TEST(CellShapes, UnknownShapeAndBadLevelAreInputErrors) {
     generate_cell("spherocyte", 3);
     FAIL() << "no error";
   } catch (const rbcsim::InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("known: discocyte"), std::string::npos);
+    EXPECT_NE(std::string(error.what()).find("is not one of discocyte"), std::string::npos);
   }
   EXPECT_THROW(generate_cell("discocyte", 8), rbcsim::InputError);
   EXPECT_THROW(generate_cell("discocyte", -1), rbcsim::InputError);

@@ -1,5 +1,8 @@
 #include "cases/capillary_case.hpp"
+#include "common/registry.hpp"
 #include "config/options/option_areas.hpp"
+#include "geometry/capillary_wall.hpp"
+#include "geometry/wall_registry.hpp"
 
 namespace rbcsim::config {
 namespace {
@@ -10,14 +13,13 @@ const cases::CapillarySettings kCapillaryDefaults{};
 void add_wall_options(OptionTable& table) {
   // The validation case by default: it is the paper's discocyte experiment (§3.3, Fig. 13), and
   // the discocyte is the default morphology.
-  table.add_choice("capillary.geometry", {"paper-validation", "paper-morphology"},
-                   "paper-validation",
+  table.add_choice("capillary.geometry", geometry::paper_capillary_names(), "paper-validation",
                    "Built-in capillary: the paper's validation case (31.2 um long, 10.2 um across, "
                    "6.75 um throat) or its three-morphology case (42 um, 10 um, 6.8 um).");
   table.add_string("capillary.wall_file", "",
                    "Wall surface (STL, fluid inside, lumen open along x) used instead of the "
                    "built-in capillary; empty: the built-in one.");
-  table.add_choice("capillary.profile", {"cosine", "linear"}, "cosine",
+  table.add_choice("capillary.profile", entry_names(geometry::narrowing_profiles()), "cosine",
                    "Shape of the constriction of the built-in capillary (the paper gives none).");
   table
       .add_number("capillary.throat_diameter_um", "um", 0.0,

@@ -1,4 +1,8 @@
+#include "common/registry.hpp"
 #include "config/options/option_areas.hpp"
+#include "lattice/boundaries.hpp"
+#include "lattice/collision.hpp"
+#include "lattice/fluid_kernel.hpp"
 
 namespace rbcsim::config {
 
@@ -11,12 +15,12 @@ void add_lattice_options(OptionTable& table) {
       .above(0.5);
   // TRT by default: with Lambda = 3/16 the bounce-back walls sit exactly half-way whatever tau,
   // so the wall position (and a capillary's diameter) does not depend on the viscosity.
-  table.add_choice("lattice.collision", {"bgk", "trt"}, "trt",
+  table.add_choice("lattice.collision", entry_names(lattice::collision_models()), "trt",
                    "Collision operator: single (BGK) or two relaxation times (TRT).");
   // Half-way by default: exact mass conservation. Bouzidi places curved walls at their true
   // position (pipe Poiseuille 0.2 % instead of 2.4 % at 20 nodes) but leaks ~1e-8 of the mass
   // per step, quadratic in the velocity (tests/lattice).
-  table.add_choice("lattice.wall_rule", {"halfway", "bouzidi"}, "halfway",
+  table.add_choice("lattice.wall_rule", entry_names(lattice::wall_rules()), "halfway",
                    "Wall rule: half-way bounce-back (staircase walls) or Bouzidi interpolated "
                    "bounce-back (walls at their exact position).");
   // 3/16 puts half-way bounce-back walls exactly half-way between nodes for Poiseuille flow.
@@ -24,6 +28,9 @@ void add_lattice_options(OptionTable& table) {
       .add_number("lattice.trt_magic", "", 0.1875,
                   "TRT magic parameter Lambda = (tau+ - 1/2)(tau- - 1/2).")
       .above(0.0);
+  table.add_choice("lattice.kernel", entry_names(lattice::fluid_kernels()), "optimised",
+                   "Fluid kernel: the fused optimised one, or the plain reference it is tested "
+                   "against (same populations to round-off).");
 }
 
 }  // namespace rbcsim::config

@@ -1,4 +1,6 @@
+#include "common/registry.hpp"
 #include "config/options/option_areas.hpp"
+#include "membrane/hinge.hpp"
 #include "membrane/membrane_kernel.hpp"
 #include "membrane/parameters.hpp"
 
@@ -80,12 +82,12 @@ void add_scales_and_variants(OptionTable& table) {
       .above(0.0);
   table.add_choice_list("membrane.forces", membrane::all_force_term_names(),
                         kMembraneDefaults.forces, "Force terms switched on.");
-  std::vector<std::string> kernels;
-  for (const auto& kernel : membrane::membrane_kernel_table()) kernels.emplace_back(kernel.name);
-  table.add_choice("membrane.kernel", kernels, kMembraneDefaults.kernel,
+  table.add_choice("membrane.kernel", entry_names(membrane::membrane_kernel_table()),
+                   kMembraneDefaults.kernel,
                    "Force kernel: the fused optimised one, or the plain reference it is tested "
                    "against (same forces to round-off).");
-  table.add_choice("membrane.distribution", {"gradient", "paper"}, kMembraneDefaults.distribution,
+  table.add_choice("membrane.distribution", entry_names(membrane::hinge_distribution_table()),
+                   kMembraneDefaults.distribution,
                    "Distribution of the angle-based forces: exact energy gradient (conserves "
                    "angular momentum) or Eqs. 15-18 as printed.");
   table
