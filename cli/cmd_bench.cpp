@@ -315,7 +315,7 @@ void attach_bench_command(CLI::App& application) {
                    "Extent of the out-of-cache lattice (default: twice the last-level cache)")
       ->expected(3)
       ->type_name("NX NY NZ")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number_at_least(1));
   command->footer(
       "--threads N sets the 'all threads' column (default: every logical CPU); --output DIR also "
       "writes DIR/bench.json; --verbose adds the time of each phase of the coupled step.");

@@ -196,33 +196,41 @@ void attach_calibrate(CLI::App& application) {
       "the cell's overall bending) and the k fitted to target moduli or to the stretch curve of "
       "Mills et al. 2004, as a config file");
   command
-      ->add_option("--fits", options->fits,
-                   "Fits to run, comma-separated: link_area, bend, curvature_terms (the default), "
-                   "stretch (k_link to Mills et al. 2004 under stretch.contact.*; minutes)")
+      ->add_option(
+          "--fits", options->fits,
+          with_default("Fits to run, comma-separated: link_area, bend, curvature_terms, stretch "
+                       "(k_link to Mills et al. 2004 under stretch.contact.*; minutes)",
+                       "calibrate.fits"))
       ->type_name("LIST");
   command
       ->add_option("--target-shear-modulus", options->shear_uN_per_m,
-                   "Target shear modulus mu in uN/m (default 10.15, the paper's)")
+                   with_default("Target shear modulus mu in uN/m",
+                                "calibrate.target.shear_modulus_uN_per_m"))
       ->type_name("UN_PER_M");
   command
       ->add_option("--target-area-modulus", options->area_uN_per_m,
-                   "Target area-compression modulus K in uN/m (default 28.2)")
+                   with_default("Target area-compression modulus K in uN/m",
+                                "calibrate.target.area_modulus_uN_per_m"))
       ->type_name("UN_PER_M");
   command
       ->add_option("--target-young-modulus", options->young_uN_per_m,
-                   "Target 2D Young's modulus E_s in uN/m (instead of mu and K)")
+                   with_default("Target 2D Young's modulus E_s in uN/m, instead of mu and K",
+                                "calibrate.target.young_modulus_uN_per_m"))
       ->type_name("UN_PER_M");
   command
       ->add_option("--target-poisson-ratio", options->poisson_ratio,
-                   "Target 2D Poisson ratio (with --target-young-modulus)")
+                   with_default("Target 2D Poisson ratio, with --target-young-modulus",
+                                "calibrate.target.poisson_ratio"))
       ->type_name("NU");
   command
       ->add_option("--target-bending-modulus", options->bending_modulus_J,
-                   "Target bending stiffness D of the two-triangle patch in J (default 2e-19)")
+                   with_default("Target bending stiffness D of the two-triangle patch in J",
+                                "calibrate.target.bending_modulus_J"))
       ->type_name("J");
   command
       ->add_option("--target-overall-bending-modulus", options->overall_bending_modulus_J,
-                   "Target overall bending modulus of the cell in J (default 2.5e-19)")
+                   with_default("Target overall bending modulus of the cell in J",
+                                "calibrate.target.overall_bending_modulus_J"))
       ->type_name("J");
   add_common_options(command, options->common);
   command->callback([options] { run_calibrate_command(*options); });

@@ -347,8 +347,9 @@ void attach_capillary(CLI::App& application) {
       ->type_name("MESH");
   command
       ->add_option("--geometry", options->geometry,
-                   "Built-in capillary: paper-validation (default; 31.2 um, 10.2 um, throat "
-                   "6.75 um) or paper-morphology (42 um, 10 um, throat 6.8 um)")
+                   with_default("Built-in capillary: paper-validation (31.2 um, 10.2 um, throat "
+                                "6.75 um) or paper-morphology (42 um, 10 um, throat 6.8 um)",
+                                "capillary.geometry"))
       ->type_name("NAME");
   command
       ->add_option("--wall", options->wall_file,

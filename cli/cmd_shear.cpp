@@ -275,18 +275,22 @@ void attach_shear(CLI::App& application) {
       "One cell in simple shear flow: length, breadth, deformation index, inclination and "
       "tank-treading frequency vs shear rate (Bessis & Mohandas 1975)");
   command
-      ->add_option("--rates", options->rates,
-                   "Shear rates in 1/s: a range list, e.g. 0:2000 (5 rates, the default), "
-                   "0:2000:250, 0:2000/9, 0,1000,2000; with --threads N, N rates run at once")
+      ->add_option(
+          "--rates", options->rates,
+          with_default("Shear rates in 1/s: a range list, e.g. 0:2000 (5 rates), 0:2000:250, "
+                       "0:2000/9, 0,1000,2000; with --threads N, N rates run at once",
+                       "shear.rates_per_s"))
       ->type_name("RANGE");
   command
       ->add_option("--boundary", options->boundary,
-                   "lees-edwards (default: sliding periodic images) or walls (moving walls)")
+                   with_default("lees-edwards (sliding periodic images) or walls (moving walls)",
+                                "shear.boundary"))
       ->type_name("KIND");
   command
       ->add_option("--max-strain", options->max_strain,
-                   "Strain (rate x time) after which a rate that is not steady is reported "
-                   "steady: false (default 40)")
+                   with_default("Strain (rate x time) after which a rate that is not steady is "
+                                "reported steady: false",
+                                "shear.max_strain"))
       ->type_name("STRAIN");
   add_common_options(command, options->common);
   add_checkpoint_options(command, options->checkpoint, options->common);

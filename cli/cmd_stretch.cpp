@@ -237,18 +237,23 @@ void attach_stretch(CLI::App& application) {
       "et al. (2004)");
   command
       ->add_option("--mode", options->mode,
-                   "How each force reaches its steady shape: quasi-static (membrane alone, no "
-                   "fluid; default) or fluid (in fluid at rest, LBM + IBM, to a steady state)")
+                   with_default("How each force reaches its steady shape: quasi-static (membrane "
+                                "alone, no fluid) or fluid (in fluid at rest, LBM + IBM, to a "
+                                "steady state)",
+                                "stretch.mode"))
       ->type_name("MODE");
   command
       ->add_option("--forces", options->forces,
-                   "Total force per contact patch in pN: mills2004 (default, the 13 forces of "
-                   "the reference) or a range list, e.g. 0:200:25, 0:200/9, 0,50,100")
+                   with_default("Total force per contact patch in pN: mills2004 (the 13 forces of "
+                                "the reference) or a range list, e.g. 0:200:25, 0:200/9, 0,50,100",
+                                "stretch.forces_pN"))
       ->type_name("RANGE");
   command
-      ->add_option("--contact-diameter-um", options->contact_diameter_um,
-                   "Bead contact diameter in um (default 2): the patch is the vertices within "
-                   "half of it from each end vertex")
+      ->add_option(
+          "--contact-diameter-um", options->contact_diameter_um,
+          with_default("Bead contact diameter in um: the patch is the vertices within half of "
+                       "it from each end vertex",
+                       "stretch.contact.diameter_um"))
       ->type_name("D");
   add_common_options(command, options->common);
   add_checkpoint_options(command, options->checkpoint, options->common);

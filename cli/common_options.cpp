@@ -1,9 +1,11 @@
 #include "common_options.hpp"
 
+#include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "config/option_table.hpp"
 
 namespace rbcsim::cli {
@@ -18,6 +20,44 @@ std::string morphology_help() {
 }
 
 }  // namespace
+
+std::string with_default(std::string help, std::string_view path) {
+  const auto* option = config::option_table().find(path);
+  if (option == nullptr) throw std::logic_error("help text names no option " + std::string(path));
+  const auto& value = option->default_value;
+  std::string shown;
+  if (value.is_string()) {
+    shown = value.get<std::string>();
+  } else if (value.is_number()) {
+    shown = format_number(value.get<double>());
+  } else if (value.is_array()) {
+    for (const auto& item : value) {
+      shown +=
+          (shown.empty() ? "" : ",") + (item.is_string() ? item.get<std::string>() : item.dump());
+    }
+  } else {
+    shown = value.dump();
+  }
+  return help + " (default: " + shown + ")";
+}
+
+CLI::Validator whole_number_at_least(long long minimum) {
+  return CLI::Validator(
+      [minimum](const std::string& text) {
+        std::size_t used = 0;
+        long long value = 0;
+        try {
+          value = std::stoll(text, &used);
+        } catch (const std::exception&) {
+          used = 0;
+        }
+        if (used == 0 || used != text.size() || value < minimum) {
+          return in_quotes(text) + " is not a whole number >= " + std::to_string(minimum);
+        }
+        return std::string();
+      },
+      "");
+}
 
 void add_config_options(CLI::App* command, config::ConfigRequest& request) {
   command
@@ -42,7 +82,7 @@ void add_common_options(CLI::App* command, CommonOptions& options) {
       ->type_name("DIR");
   command->add_option("--threads", options.threads, "OpenMP threads (default: all cores)")
       ->type_name("N")
-      ->check(CLI::PositiveNumber);
+      ->check(whole_number_at_least(1));
   command->add_flag("--json", options.json, "Print the machine-readable result on stdout");
   auto* quiet = command->add_flag("--quiet", options.quiet, "Print only errors");
   command

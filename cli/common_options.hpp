@@ -45,6 +45,14 @@ CheckpointInterval parse_checkpoint_interval(std::string_view text);
 // CommonOptions::resuming.
 void add_checkpoint_options(CLI::App* command, CheckpointOptions& options, CommonOptions& common);
 
+// `help` followed by " (default: X)", X the option table's default of config key `path`: a help
+// text never states a default of its own (logic_error for a path that is not an option).
+std::string with_default(std::string help, std::string_view path);
+
+// A check for an option that takes a whole number >= minimum; its complaint reads like rbcsim's
+// others (`--threads: "0" is not a whole number >= 1`), not CLI11's range text.
+CLI::Validator whole_number_at_least(long long minimum);
+
 // Only the options that build the configuration, for commands that run nothing (config show).
 void add_config_options(CLI::App* command, config::ConfigRequest& request);
 

@@ -3,6 +3,7 @@
 // interrupted by SIGINT or SIGTERM (the results so far written).
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <string>
 
 #include "command_registry.hpp"
 #include "common/errors.hpp"
@@ -24,7 +25,13 @@ int main(int argc, char** argv) {
   } catch (const CLI::Success& done) {  // --help, --version
     return application.exit(done);
   } catch (const CLI::ParseError& usage) {
-    application.exit(usage);
+    // The same one line as every other bad input; the command's --help tells the rest.
+    std::string help = "rbcsim";
+    for (const CLI::App* level = &application; !level->get_subcommands().empty();) {
+      level = level->get_subcommands().front();
+      help += " " + level->get_name();
+    }
+    std::cerr << "rbcsim: error: " << usage.what() << " (see " << help << " --help)\n";
     return rbcsim::kExitBadInput;
   } catch (const rbcsim::InputError& bad_input) {
     std::cerr << "rbcsim: error: " << bad_input.what() << '\n';
