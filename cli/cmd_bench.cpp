@@ -2,17 +2,21 @@
 // (docs/performance.md), in one run — memory bandwidth (STREAM triad), fluid-only MLUPS on
 // HemoCell's 40x40x20 lattice and on one far beyond the last-level cache, the fraction of the DRAM
 // roofline, and ms per coupled step with a 642- and a 2562-vertex cell — for one thread and for
-// all, beside HemoCell's figures on the same machine. Wall-clock measurements: other load lowers
-// them, so the machine's load average is printed with them.
+// all, with ratios to a reference measured on a named machine (bench_reference.hpp; HemoCell side
+// by side on the project machine unless --reference FILE). Wall-clock measurements: other load
+// lowers them, so the machine's load average is printed with them.
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "bench_reference.hpp"
 #include "command_registry.hpp"
 #include "common_options.hpp"
 #include "coupling/benchmark.hpp"
@@ -28,10 +32,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-// HemoCell built from source on the project machine, same cases (docs/performance.md).
-constexpr double kHemoCellFluidMlupsPerCore = 3.5;
-constexpr double kHemoCellCoupledMsOneCore = 12.0;  // 11-13 ms per step, 642-vertex cell
-constexpr double kHemoCellCoupledMsTwoCores = 7.0;
 // The targets of the issue: >= 80 % of the DRAM roofline on the large lattice; a coupled step
 // (642 vertices, phi2, one core) 20x faster than HemoCell's, i.e. <= 0.6 ms.
 constexpr double kRooflineTarget = 0.8;
@@ -54,7 +54,14 @@ constexpr std::size_t kMinimumTriadBytes = std::size_t{64} << 20;
 struct BenchOptions {
   CommonOptions common;
   std::vector<int> large_lattice;
+  std::optional<std::filesystem::path> reference_file;
 };
+
+// figure / ours for a time, ours / figure for a throughput: > 1 when rbcsim is faster.
+Json ratio_or_null(const std::optional<double>& reference, double ours, bool time) {
+  if (!reference) return nullptr;
+  return time ? *reference / ours : ours / *reference;
+}
 
 std::string lattice_name(const std::array<int, 3>& extent) {
   return std::to_string(extent[0]) + "x" + std::to_string(extent[1]) + "x" +
@@ -74,17 +81,20 @@ lattice::FluidThroughput best_fluid_throughput(const std::array<int, 3>& extent,
 }
 
 Json fluid_entry(const std::array<int, 3>& extent, const lattice::FluidThroughput& throughput,
-                 double roofline_mlups, int threads) {
+                 double roofline_mlups, int threads, const BenchReference& reference) {
+  const bool comparable = extent == kHemoCellLattice;
   return {{"lattice", extent},
           {"optimised_mlups", throughput.optimised_mlups},
           {"reference_mlups", throughput.reference_mlups},
           {"optimised_over_reference", throughput.optimised_mlups / throughput.reference_mlups},
           {"roofline_fraction", throughput.optimised_mlups / roofline_mlups},
-          {"speedup_vs_hemocell_per_core",
-           throughput.optimised_mlups / (kHemoCellFluidMlupsPerCore * threads)}};
+          {"speedup_vs_reference", comparable ? ratio_or_null(reference.fluid_mlups(threads),
+                                                              throughput.optimised_mlups, false)
+                                              : Json(nullptr)}};
 }
 
-Json coupled_entry(const coupling::CoupledStepTiming& timing, int threads) {
+Json coupled_entry(const coupling::CoupledStepTiming& timing, int threads,
+                   const BenchReference& reference) {
   const auto& phases = timing.fastest_batch_phases;
   const double ms_per_step = 1e3 / static_cast<double>(phases.steps);
   Json entry = {{"vertices", timing.vertex_count},
@@ -96,12 +106,11 @@ Json coupled_entry(const coupling::CoupledStepTiming& timing, int threads) {
                   {"interpolate_advance", phases.advance_s * ms_per_step},
                   {"checks", phases.checks_s * ms_per_step},
                   {"observers", phases.observers_s * ms_per_step}}}};
-  // HemoCell's figures are for the 642-vertex cell on one and on two cores.
-  const bool comparable = timing.vertex_count == 642 && (threads == 1 || threads == 2);
-  entry["speedup_vs_hemocell"] =
-      comparable ? Json((threads == 1 ? kHemoCellCoupledMsOneCore : kHemoCellCoupledMsTwoCores) /
-                        timing.ms_per_step)
-                 : Json(nullptr);
+  // The reference's figures are for the 642-vertex cell.
+  entry["speedup_vs_reference"] =
+      timing.vertex_count == 642
+          ? ratio_or_null(reference.coupled_ms(threads), timing.ms_per_step, true)
+          : Json(nullptr);
   return entry;
 }
 
@@ -112,6 +121,7 @@ struct BenchSetup {
   std::string ibm_kernel;
   std::array<int, 3> large_lattice;
   std::size_t triad_elements;
+  BenchReference reference;
 };
 
 Json measure_at(int threads, const BenchSetup& setup) {
@@ -122,17 +132,17 @@ Json measure_at(int threads, const BenchSetup& setup) {
   fluid.push_back(fluid_entry(kHemoCellLattice,
                               best_fluid_throughput(kHemoCellLattice, kSmallLatticeSteps,
                                                     kSmallLatticeRepetitions, threads),
-                              roofline_mlups, threads));
+                              roofline_mlups, threads, setup.reference));
   fluid.push_back(
       fluid_entry(setup.large_lattice,
                   best_fluid_throughput(setup.large_lattice, kLargeLatticeSteps, 1, threads),
-                  roofline_mlups, threads));
+                  roofline_mlups, threads, setup.reference));
   Json coupled = Json::array();
   for (const auto& cell : setup.cells) {
     coupled.push_back(
         coupled_entry(coupling::measure_coupled_step(cell, setup.membrane, *setup.units,
                                                      kHemoCellLattice, setup.ibm_kernel, threads),
-                      threads));
+                      threads, setup.reference));
   }
   return {{"threads", threads},
           {"memory_bandwidth_GB_per_s", bandwidth},
@@ -157,6 +167,7 @@ BenchSetup bench_setup(const BenchOptions& options, const coupling::MachineDescr
                             : coupling::lattice_beyond_cache(machine.last_level_cache_bytes);
   setup.triad_elements =
       std::max(kMinimumTriadBytes, machine.last_level_cache_bytes) / sizeof(double);
+  setup.reference = load_bench_reference(options.reference_file);
   return setup;
 }
 
@@ -215,7 +226,7 @@ void print_fluid_rows(const Json& runs, std::size_t index) {
                     }),
             index == 1 ? "target >= " + fixed(100.0 * kRooflineTarget, 0) + " % (large lattice)"
                        : "in cache: may exceed 100 %");
-  print_row("  vs HemoCell (3.5 MLUPS per core)", field("speedup_vs_hemocell_per_core", 1, "x"));
+  if (index == 0) print_row("  vs the reference (below)", field("speedup_vs_reference", 1, "x"));
 }
 
 void print_coupled_rows(const Json& runs, std::size_t index, bool verbose) {
@@ -230,9 +241,11 @@ void print_coupled_rows(const Json& runs, std::size_t index, bool verbose) {
             first["vertices"] == 642
                 ? "target <= " + fixed(kCoupledTargetMsOneCore, 1) + " ms on one core"
                 : "");
-  print_row("  vs HemoCell (11-13 ms one core, 7 ms two)", per_run(runs, [&](const Json& run) {
-              return number_or_dash(run["coupled"][index]["speedup_vs_hemocell"], 1, "x");
-            }));
+  if (first["vertices"] == 642) {
+    print_row("  vs the reference (below)", per_run(runs, [&](const Json& run) {
+                return number_or_dash(run["coupled"][index]["speedup_vs_reference"], 1, "x");
+              }));
+  }
   if (!verbose) return;
   for (const auto& [phase, value] : first["phases_ms_per_step"].items()) {
     // Copied into the lambda: clang 14 (the fuzz build) cannot capture a structured binding.
@@ -266,6 +279,29 @@ void print_text(const Json& report, bool verbose) {
   for (std::size_t index = 0; index < runs.front()["coupled"].size(); ++index) {
     print_coupled_rows(runs, index, verbose);
   }
+  const auto& reference = report["reference"];
+  std::printf(
+      "\nreference: %s, measured on %s (\"-\": no figure for that case or thread count; "
+      "a ratio means something only on that machine)\n",
+      reference["label"].get<std::string>().c_str(),
+      reference["machine"].get<std::string>().c_str());
+  if (!reference["provenance"].get<std::string>().empty()) {
+    std::printf("  %s\n", reference["provenance"].get<std::string>().c_str());
+  }
+}
+
+Json reference_json(const BenchReference& reference) {
+  const auto per_threads = [](const std::map<int, double>& figures) {
+    Json object = Json::object();
+    for (const auto& [threads, value] : figures) object[std::to_string(threads)] = value;
+    return object;
+  };
+  return {
+      {"label", reference.label},
+      {"machine", reference.machine},
+      {"provenance", reference.provenance},
+      {"coupled_ms_per_step_642_vertices", per_threads(reference.coupled_ms_per_step_642_vertices)},
+      {"fluid_mlups_40x40x20", per_threads(reference.fluid_mlups_40x40x20)}};
 }
 
 void run_bench(const BenchOptions& options) {
@@ -285,10 +321,7 @@ void run_bench(const BenchOptions& options) {
   }
   const Json report = {{"machine", machine_json(machine)},
                        {"ibm_kernel", setup.ibm_kernel},
-                       {"hemocell",
-                        {{"fluid_mlups_per_core", kHemoCellFluidMlupsPerCore},
-                         {"coupled_ms_per_step_one_core", kHemoCellCoupledMsOneCore},
-                         {"coupled_ms_per_step_two_cores", kHemoCellCoupledMsTwoCores}}},
+                       {"reference", reference_json(setup.reference)},
                        {"targets",
                         {{"roofline_fraction_large_lattice", kRooflineTarget},
                          {"coupled_ms_per_step_one_core", kCoupledTargetMsOneCore}}},
@@ -307,7 +340,9 @@ void run_bench(const BenchOptions& options) {
 
 void attach_bench_command(CLI::App& application) {
   auto* command = application.add_subcommand(
-      "bench", "Measure memory bandwidth, fluid MLUPS and the coupled step against HemoCell");
+      "bench",
+      "Measure memory bandwidth, fluid MLUPS and the coupled step, with ratios to a reference "
+      "measured on a named machine (HemoCell side by side on the project machine by default)");
   auto options = std::make_shared<BenchOptions>();
   add_common_options(command, options->common);
   command
@@ -316,6 +351,12 @@ void attach_bench_command(CLI::App& application) {
       ->expected(3)
       ->type_name("NX NY NZ")
       ->check(whole_number_at_least(1));
+  command
+      ->add_option("--reference", options->reference_file,
+                   "JSON file of another code's figures on the same cases and the machine they "
+                   "were measured on (docs/commands/bench.md); default: "
+                   "share/reference/hemocell_bench.json")
+      ->type_name("FILE");
   command->footer(
       "--threads N sets the 'all threads' column (default: every logical CPU); --output DIR also "
       "writes DIR/bench.json; --verbose adds the time of each phase of the coupled step.");
