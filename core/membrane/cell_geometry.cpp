@@ -26,13 +26,16 @@ void measure_cell_geometry(std::span<const Vec3> positions_um,
 
   // Divergence theorem per triangle: V = sum_t (area vector . centroid) / 3.
   double volume_um3 = 0.0;
+  double area_um2 = 0.0;
   for (std::size_t t = 0; t < triangles.size(); ++t) {
+    area_um2 += geometry.triangle_area_vectors_um2[t].norm();
     const auto& corners = triangles[t];
     const Vec3 centroid =
         (positions_um[corners[0]] + positions_um[corners[1]] + positions_um[corners[2]]) / 3.0;
     volume_um3 += geometry.triangle_area_vectors_um2[t].dot(centroid) / 3.0;
   }
   geometry.volume_um3 = volume_um3;
+  geometry.area_um2 = area_um2;
 
   double signed_sum_um = 0.0;
   double absolute_sum_um = 0.0;

@@ -18,6 +18,7 @@ struct CellGeometry {
   // Signed angle between the outward normals of the edge's triangles (convex positive), rad.
   std::vector<double> dihedral_angles_rad;
   double volume_um3 = 0.0;
+  double area_um2 = 0.0;  // the whole membrane's, sum of the triangles' areas
   // sum_j l_j theta_j / 2 = DeltaA / (2 D0) (Eqs. 12-13) and sum_j l_j |theta_j| / 2 = C / (2 D0)
   // (Eq. 14), um. D0 cancels in every relative deviation, so it is never needed.
   double signed_curvature_sum_um = 0.0;

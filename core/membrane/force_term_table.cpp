@@ -28,6 +28,10 @@ std::vector<ForceTermEntry> built_in_terms() {
        }},
       {"area_difference", make_area_difference_term},
       {"total_curvature", make_total_curvature_term},
+      {"total_area",
+       [](const MembraneParameters& p, const ReferenceState& r) -> std::unique_ptr<ForceTerm> {
+         return std::make_unique<TotalAreaTerm>(p, r);
+       }},
   };
 }
 
@@ -52,5 +56,9 @@ std::vector<std::unique_ptr<ForceTerm>> make_force_terms(std::span<const std::st
 }
 
 std::vector<std::string> all_force_term_names() { return force_term_registry().names(); }
+
+std::vector<std::string> paper_force_term_names() {
+  return {"link", "bend", "area", "volume", "area_difference", "total_curvature"};
+}
 
 }  // namespace rbcsim::membrane

@@ -52,6 +52,23 @@ class VolumeTerm final : public LawTerm {
   void evaluate(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
 };
 
+// Whole-membrane area (not in the paper; Fedosov et al. 2010's global area term, Mirheo's ka_tot):
+// per cell, d = (A - A0)/A0 and E = K A0 d^2 / 2 with K the total-area modulus, so
+// F_i = -K d dA/dx_i. The lipid bilayer's area incompressibility, beside the skeleton's local
+// area term. Harmonic: no limit tau (other terms fail first); NaN still fails.
+class TotalAreaTerm final : public ForceTerm {
+ public:
+  TotalAreaTerm(const MembraneParameters& parameters, const ReferenceState& reference);
+  void evaluate(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
+
+ private:
+  double modulus_pN_per_um_;
+  double reference_area_um2_;
+};
+
+// The total_area term's failure (both kernels): RuntimeFailure for a non-finite deviation.
+[[noreturn]] void fail_non_finite_total_area(double deviation);
+
 // Common loop of the three angle-based terms (length L0): per edge, the term's HingeLoad is
 // handed to the chosen distribution, which writes the hinge's four slots.
 class HingeTerm : public LawTerm {

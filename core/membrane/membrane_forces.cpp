@@ -20,9 +20,10 @@ const TermForces& MembraneForces::term(std::string_view name) const {
   throw std::out_of_range("membrane force term '" + std::string(name) + "' is not enabled");
 }
 
-CellDeviations cell_deviations(const ReferenceState& reference, double volume_um3,
+CellDeviations cell_deviations(const ReferenceState& reference, double volume_um3, double area_um2,
                                double signed_curvature_sum_um, double absolute_curvature_sum_um) {
   return {(volume_um3 - reference.volume_um3) / reference.volume_um3,
+          (area_um2 - reference.area_um2) / reference.area_um2,
           (signed_curvature_sum_um - reference.signed_curvature_sum_um) /
               std::abs(reference.signed_curvature_sum_um),
           (absolute_curvature_sum_um - reference.absolute_curvature_sum_um) /

@@ -27,12 +27,13 @@ enum class ForceDetail {
 // d_DeltaA is not finite when DeltaA0 = 0.
 struct CellDeviations {
   double volume = 0.0;
+  double total_area = 0.0;
   double area_difference = 0.0;
   double total_curvature = 0.0;
 };
 
 // The deviations of a shape with these cell measures (the sums are those of ReferenceState).
-CellDeviations cell_deviations(const ReferenceState& reference, double volume_um3,
+CellDeviations cell_deviations(const ReferenceState& reference, double volume_um3, double area_um2,
                                double signed_curvature_sum_um, double absolute_curvature_sum_um);
 
 struct MembraneForces {

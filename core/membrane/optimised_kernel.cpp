@@ -32,6 +32,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -90,7 +91,7 @@ FusedConstants make_constants(const MembraneModel& model, const FusedDistributio
       .enabled = {},
       .angle_terms = false,
       .tau = {p.tau_link, p.tau_bend_rad, p.tau_area, p.tau_volume, p.tau_area_difference,
-              p.tau_total_curvature},
+              p.tau_total_curvature, std::numeric_limits<double>::infinity()},
       // Energy stiffnesses (the terms' files): link (k_l kBT / p) L0_e; bend K_b of the gradient
       // form in both distributions; area (k_a kBT / L0) 6 A0 / P0; volume (k_v kBT / L0) V0 / g0;
       // cell terms sqrt 3 |S0| k kBT / L0.
@@ -110,6 +111,7 @@ FusedConstants make_constants(const MembraneModel& model, const FusedDistributio
                           distribution.cell_scale(total_curvature_pN),
                           std::sqrt(3.0) * total_curvature_pN *
                               reference.absolute_curvature_sum_um},
+      .total_area_modulus_pN_per_um = p.total_area_modulus_uN_per_m,
   };
   for (auto name : model.enabled_term_names()) constants.enabled[term_of(name)] = true;
   constants.angle_terms = constants.enabled[kBend] || constants.enabled[kAreaDifference] ||
@@ -203,6 +205,10 @@ class OptimisedKernel final : public MembraneKernel {
     s.triangle_normals_um2.assign_zero(triangles);
     s.area_deviations.assign(triangles, 0.0);
     s.volume_shares_um3.assign(triangles, 0.0);
+    s.triangle_areas_um2.assign(triangles, 0.0);
+    if (constants_.enabled[kTotalArea]) {
+      for (auto& corner : s.corner_area_gradients_um) corner.assign_zero(triangles);
+    }
     s.slot_forces_pN.assign_zero(4 * edges + 3 * triangles);
     s.edge_blocks.assign(block_count(edges), EdgeBlockSums{});
     s.triangle_blocks.assign(block_count(triangles), TriangleBlockSums{});
@@ -283,14 +289,16 @@ class OptimisedKernel final : public MembraneKernel {
       triangles.area_max_abs_deviation =
           simd::max_magnitude(triangles.area_max_abs_deviation, block.area_max_abs_deviation);
       triangles.volume_um3 += block.volume_um3;
+      triangles.area_um2 += block.area_um2;
     }
     CellSummary summary;
-    summary.cell = cell_deviations(model.reference(), triangles.volume_um3,
+    summary.cell = cell_deviations(model.reference(), triangles.volume_um3, triangles.area_um2,
                                    edges.signed_curvature_um, edges.absolute_curvature_um);
     const auto& cell = summary.cell;
     summary.max_abs_deviation = {edges.link_max_abs_deviation,     edges.bend_max_abs_deviation,
                                  triangles.area_max_abs_deviation, std::abs(cell.volume),
-                                 std::abs(cell.area_difference),   std::abs(cell.total_curvature)};
+                                 std::abs(cell.area_difference),   std::abs(cell.total_curvature),
+                                 std::abs(cell.total_area)};
     for (std::size_t i = 0; i < enabled_terms_.size(); ++i) {
       const Term term = enabled_terms_[i];
       // `!(|d| < tau)` also catches NaN.
@@ -308,7 +316,8 @@ class OptimisedKernel final : public MembraneKernel {
         enabled[kAreaDifference] ? constants_.area_difference.coefficient(cell.area_difference)
                                  : 0.0,
         enabled[kTotalCurvature] ? constants_.total_curvature.coefficient(cell.total_curvature)
-                                 : 0.0};
+                                 : 0.0,
+        enabled[kTotalArea] ? -constants_.total_area_modulus_pN_per_um * cell.total_area : 0.0};
     return summary;
   }
 
@@ -411,6 +420,9 @@ class OptimisedKernel final : public MembraneKernel {
       case kTotalCurvature:
         return constants_.total_curvature.energy_scale *
                constants_.total_curvature.law.energy(cell.total_curvature);
+      case kTotalArea:
+        return 0.5 * constants_.total_area_modulus_pN_per_um * reference.area_um2 *
+               cell.total_area * cell.total_area;
       case kTermCount:
         break;
     }
@@ -429,7 +441,7 @@ class OptimisedKernel final : public MembraneKernel {
       }
     };
     const std::array<double, kTermCount> cell_deviation = {
-        0.0, 0.0, 0.0, cell.volume, cell.area_difference, cell.total_curvature};
+        0.0, 0.0, 0.0, cell.volume, cell.area_difference, cell.total_curvature, cell.total_area};
     switch (term) {
       case kLink:
         first_beyond("edge", scratch.link_deviations);
@@ -440,6 +452,8 @@ class OptimisedKernel final : public MembraneKernel {
       case kArea:
         first_beyond("triangle", scratch.area_deviations);
         break;
+      case kTotalArea:
+        fail_non_finite_total_area(cell.total_area);
       default:
         require_within_limit(kTermNames[term], "the cell", cell_deviation[term], tau);
     }

@@ -212,7 +212,7 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_edge_block(const SlotWeights& weights, 
   }
 }
 
-// F = w_area A_k + c_v N per corner k.
+// F = w_area A_k + c_v N (+ c_A G_k with total_area) per corner k.
 RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_triangle_block(const SlotWeights& weights,
                                                         std::size_t block,
                                                         OptimisedScratch& scratch) {
@@ -236,14 +236,31 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_triangle_block(const SlotWeights& weigh
       shifted(scratch.slot_forces_pN, first_slot + 2 * triangles)};
   const double w_area = weights[kArea];
   const double c_volume = weights[kVolume];
+  const double c_total_area = weights[kTotalArea];
 
+  if (c_total_area == 0.0) {  // total_area off (or at its reference area): no gradient arrays
+#pragma omp simd
+    for (std::int32_t t = range.begin; t < range.end; ++t) {
+      const Xyz volume = c_volume * Xyz{normal_x[t], normal_y[t], normal_z[t]};
+#pragma GCC unroll 3
+      for (std::size_t corner = 0; corner < 3; ++corner) {
+        slots[corner].store(
+            t, w_area * Xyz{area_x[corner][t], area_y[corner][t], area_z[corner][t]} + volume);
+      }
+    }
+    return;
+  }
+  std::array<XyzArrays, 3> gradients;
+  for (std::size_t corner = 0; corner < 3; ++corner) {
+    gradients[corner] = arrays(scratch.corner_area_gradients_um[corner]);
+  }
 #pragma omp simd
   for (std::int32_t t = range.begin; t < range.end; ++t) {
     const Xyz volume = c_volume * Xyz{normal_x[t], normal_y[t], normal_z[t]};
 #pragma GCC unroll 3
     for (std::size_t corner = 0; corner < 3; ++corner) {
-      slots[corner].store(
-          t, w_area * Xyz{area_x[corner][t], area_y[corner][t], area_z[corner][t]} + volume);
+      slots[corner].store(t, w_area * Xyz{area_x[corner][t], area_y[corner][t], area_z[corner][t]} +
+                                 volume + c_total_area * gradients[corner].load(t));
     }
   }
 }
@@ -269,7 +286,15 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void measure_triangle_block(const FusedConstants& 
   const XyzArrays normals = arrays(scratch.triangle_normals_um2);
   double* area_deviations = scratch.area_deviations.data();
   double* volume_shares = scratch.volume_shares_um3.data();
+  double* triangle_areas = scratch.triangle_areas_um2.data();
   const double area_on = constants.enabled[kArea] ? 1.0 : 0.0;  // see measure_edges
+  const bool total_area_on = constants.enabled[kTotalArea];
+  std::array<XyzArrays, 3> gradients{};
+  if (total_area_on) {
+    for (std::size_t corner = 0; corner < 3; ++corner) {
+      gradients[corner] = arrays(scratch.corner_area_gradients_um[corner]);
+    }
+  }
   const ScaledLaw area = constants.area;
 
 #pragma omp simd
@@ -280,6 +305,7 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void measure_triangle_block(const FusedConstants& 
     const Xyz normal = cross(b - a, c - a);
     normals.store(t, normal);
     const double normal_length = std::sqrt(dot(normal, normal));
+    triangle_areas[t] = 0.5 * normal_length;
     const double deviation =
         (0.5 * normal_length - reference_areas[t]) * inverse_reference_areas[t];
     area_deviations[t] = deviation;
@@ -292,6 +318,12 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void measure_triangle_block(const FusedConstants& 
     corner_forces[0].store(t, cross(scaled_normal, c - b));
     corner_forces[1].store(t, cross(scaled_normal, a - c));
     corner_forces[2].store(t, cross(scaled_normal, b - a));
+    if (total_area_on) {  // loop-invariant: the compiler keeps two versions of the loop
+      const Xyz half_unit_normal = (0.5 / normal_length) * normal;
+      gradients[0].store(t, cross(half_unit_normal, c - b));
+      gradients[1].store(t, cross(half_unit_normal, a - c));
+      gradients[2].store(t, cross(half_unit_normal, b - a));
+    }
   }
 
   TriangleBlockSums sums;
@@ -299,6 +331,7 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void measure_triangle_block(const FusedConstants& 
     sums.area_max_abs_deviation =
         simd::max_magnitude(sums.area_max_abs_deviation, area_deviations[t]);
     sums.volume_um3 += volume_shares[t];
+    sums.area_um2 += triangle_areas[t];
   }
   scratch.triangle_blocks[block] = sums;
 }

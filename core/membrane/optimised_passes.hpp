@@ -22,7 +22,7 @@ inline std::size_t block_count(std::size_t elements) {
   return (elements + kBlockSize - 1) / kBlockSize;
 }
 
-// The six terms, in registry order (force_term_table.cpp).
+// The built-in terms, in registry order (force_term_table.cpp).
 enum Term : std::size_t {
   kLink,
   kBend,
@@ -30,10 +30,11 @@ enum Term : std::size_t {
   kVolume,
   kAreaDifference,
   kTotalCurvature,
+  kTotalArea,
   kTermCount
 };
 constexpr std::array<std::string_view, kTermCount> kTermNames = {
-    "link", "bend", "area", "volume", "area_difference", "total_curvature"};
+    "link", "bend", "area", "volume", "area_difference", "total_curvature", "total_area"};
 
 // A term's force law and scales. An element's force coefficient is force_scale slope(d) (what
 // it multiplies is said where it is used); its energy is energy_scale (times a per-element
@@ -55,6 +56,8 @@ struct FusedConstants {
   ScaledLaw volume;           // c_v = -coefficient
   ScaledLaw area_difference;  // c_ad = coefficient
   ScaledLaw total_curvature;  // c_tc = coefficient
+  // total_area: c_A = -K d times each corner's dA/dx (harmonic, no law); K in pN/um.
+  double total_area_modulus_pN_per_um;
 };
 
 // Per-element reference data, structure of arrays (inverses: multiplications in the passes).
@@ -83,7 +86,8 @@ void measure_triangle_block(const FusedConstants& constants, const CornerStencil
                             OptimisedScratch& scratch);
 
 // The weight of each term in a force: 1 for link, bend and area (their coefficients are in the
-// scratch already), the cell coefficients c_v, c_ad, c_tc for the others; 0 for a term left out.
+// scratch already), the cell coefficients c_v, c_ad, c_tc, c_A for the others; 0 for a term left
+// out.
 using SlotWeights = std::array<double, kTermCount>;
 
 // Step 3a: the force of every slot of block `block` of the edges (or triangles) for `weights`,

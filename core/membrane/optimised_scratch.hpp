@@ -37,6 +37,7 @@ struct EdgeBlockSums {
 struct TriangleBlockSums {
   double area_max_abs_deviation = 0.0;
   double volume_um3 = 0.0;
+  double area_um2 = 0.0;
 };
 
 struct OptimisedScratch {
@@ -60,6 +61,9 @@ struct OptimisedScratch {
   Vec3Arrays triangle_normals_um2;
   std::vector<double> area_deviations;
   std::vector<double> volume_shares_um3;
+  std::vector<double> triangle_areas_um2;
+  // Per triangle, only with total_area enabled: dA/dx of each corner, (1/2) n x (opposite edge).
+  std::array<Vec3Arrays, 3> corner_area_gradients_um;
   // The force of every slot for the current weights: hinge slot r E + e (role r of edge e), then
   // corner slot 4 E + k T + t (corner k of triangle t). A vertex's force is the sum of its slots.
   Vec3Arrays slot_forces_pN;

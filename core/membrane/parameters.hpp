@@ -12,6 +12,9 @@ namespace rbcsim::membrane {
 
 // Every force term of the registry (force_term_table.cpp), in evaluation order.
 std::vector<std::string> all_force_term_names();
+// The paper's six (Eqs. 6-11), the default: a term beyond them (total_area) is switched on by
+// naming it.
+std::vector<std::string> paper_force_term_names();
 
 struct MembraneParameters {
   // Stiffness k of each term (Eqs. 6-11), in kBT.
@@ -41,8 +44,12 @@ struct MembraneParameters {
   // L0 of Table 2, the denominator of Eqs. 7-11, um.
   double force_length_scale_um = 0.25;
 
+  // Whole-membrane area modulus K of the total_area term (force_terms.hpp), pN/um = uN/m.
+  // Default: the bilayer's measured area-expansion modulus, 0.288 N/m (Evans, Waugh & Melnik 1976).
+  double total_area_modulus_uN_per_m = 288000.0;
+
   // Enabled terms by name (any subset of all_force_term_names()).
-  std::vector<std::string> forces = all_force_term_names();
+  std::vector<std::string> forces = paper_force_term_names();
   // How the three angle-based terms (bend, area_difference, total_curvature) push the four
   // vertices of each edge: "paper" (Eqs. 15-18, HemoCell's way) or "gradient" (exact negative
   // gradient of the discrete energy). See hinge.hpp. Default "gradient": it conserves angular

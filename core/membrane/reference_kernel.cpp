@@ -45,8 +45,8 @@ class ReferenceKernel final : public MembraneKernel {
     }
     const auto& geometry = workspace.geometry;
     forces.cell =
-        cell_deviations(model.reference(), geometry.volume_um3, geometry.signed_curvature_sum_um,
-                        geometry.absolute_curvature_sum_um);
+        cell_deviations(model.reference(), geometry.volume_um3, geometry.area_um2,
+                        geometry.signed_curvature_sum_um, geometry.absolute_curvature_sum_um);
     cap_and_sum(model.parameters().vertex_force_cap_pN, forces);
     if (detail == ForceDetail::totals) drop_term_detail(forces);
   }

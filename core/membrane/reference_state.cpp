@@ -53,6 +53,7 @@ ReferenceState capture_reference_state(std::span<const Vec3> positions_um,
                                   "seen from outside");
   }
   reference.volume_um3 = geometry.volume_um3;
+  reference.area_um2 = geometry.area_um2;
   reference.mean_volume_gradient_um2 = mean_volume_gradient_um2(
       triangles, geometry.triangle_area_vectors_um2, topology.vertex_count());
   reference.signed_curvature_sum_um = geometry.signed_curvature_sum_um;

@@ -19,6 +19,7 @@ struct ReferenceState {
   // Perimeter per triangle: normalises the area force to the paper's magnitude (area_term.cpp).
   std::vector<double> triangle_perimeters_um;
   double volume_um3 = 0.0;  // V0 (Eq. 9)
+  double area_um2 = 0.0;    // A0 of the whole membrane (the total_area term)
   // Mean over vertices of |dV/dx_i| = |(1/3) sum of the area vectors of i's triangles|, um^2:
   // normalises the volume force to the paper's magnitude (volume_term.cpp).
   double mean_volume_gradient_um2 = 0.0;

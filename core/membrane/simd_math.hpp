@@ -53,6 +53,7 @@ struct XyzArrays {
     y[i] = v.y;
     z[i] = v.z;
   }
+  Xyz load(std::size_t i) const { return {x[i], y[i], z[i]}; }
   // v where `on` is nonzero, else zero (see where()).
   void store_where(std::size_t i, const Xyz& v, double on) const {
     x[i] = where(on, v.x);

@@ -169,7 +169,7 @@ double peak_deformation_index(const RunDirectory& run) {
 
 // The paper's four-term model: every term but area difference and total curvature.
 std::string four_terms() {
-  auto terms = membrane::all_force_term_names();
+  auto terms = membrane::paper_force_term_names();
   std::erase_if(terms, [](const std::string& term) {
     return term == "area_difference" || term == "total_curvature";
   });
@@ -180,7 +180,7 @@ std::string four_terms() {
 // run with all six terms, against every run of the same cell through the same tube with the
 // other four only: the two peak DIs.
 nlohmann::json peak_deformation_by_terms(const RunList& runs, Section& section) {
-  const std::string all_terms = describe_terms(membrane::all_force_term_names());
+  const std::string all_terms = describe_terms(membrane::paper_force_term_names());
   const std::string without_new_terms = four_terms();
   auto comparisons = nlohmann::json::array();
   for (const auto* with : runs) {

@@ -37,19 +37,31 @@ std::vector<std::string> string_list(const JsonField& field) {
 
 }  // namespace
 
+// Relative to the paper's six: "all six", "without area_difference and total_curvature", and a
+// term beyond them appended ("all six + total_area").
 std::string describe_terms(const std::vector<std::string>& enabled) {
+  const auto paper = membrane::paper_force_term_names();
   const auto all = membrane::all_force_term_names();
-  const auto is_known = [&all](const std::string& name) {
-    return std::find(all.begin(), all.end(), name) != all.end();
+  const auto contains = [](const std::vector<std::string>& names, const std::string& name) {
+    return std::find(names.begin(), names.end(), name) != names.end();
   };
-  if (!std::all_of(enabled.begin(), enabled.end(), is_known)) return join_words(enabled);
-  std::vector<std::string> missing;
-  for (const auto& name : all) {
-    if (std::find(enabled.begin(), enabled.end(), name) == enabled.end()) missing.push_back(name);
+  if (!std::all_of(enabled.begin(), enabled.end(),
+                   [&](const std::string& name) { return contains(all, name); })) {
+    return join_words(enabled);
   }
-  if (missing.empty()) return "all " + count_in_words(all.size());
-  if (missing.size() == all.size()) return "none";
-  return "without " + join_words(missing);
+  std::vector<std::string> missing;
+  for (const auto& name : paper) {
+    if (!contains(enabled, name)) missing.push_back(name);
+  }
+  std::vector<std::string> extra;
+  for (const auto& name : enabled) {
+    if (!contains(paper, name)) extra.push_back(name);
+  }
+  std::string described = missing.empty()                  ? "all " + count_in_words(paper.size())
+                          : missing.size() == paper.size() ? "none of the paper's"
+                                                           : "without " + join_words(missing);
+  if (!extra.empty()) described += " + " + join_words(extra);
+  return described;
 }
 
 JsonField RunDirectory::config_field() const {

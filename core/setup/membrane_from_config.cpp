@@ -11,7 +11,7 @@ constexpr double kPiconewtonMicrometresPerJoule = 1e18;
 using Parameters = membrane::MembraneParameters;
 
 // Options copied unchanged (same name and unit on both sides).
-constexpr std::array<std::pair<const char*, double Parameters::*>, 15> kNumberOptions{{
+constexpr std::array<std::pair<const char*, double Parameters::*>, 16> kNumberOptions{{
     {"membrane.k_link_kBT", &Parameters::k_link_kBT},
     {"membrane.k_bend_kBT", &Parameters::k_bend_kBT},
     {"membrane.k_area_kBT", &Parameters::k_area_kBT},
@@ -27,6 +27,7 @@ constexpr std::array<std::pair<const char*, double Parameters::*>, 15> kNumberOp
     {"membrane.persistence_length_um", &Parameters::persistence_length_um},
     {"membrane.force_length_scale_um", &Parameters::force_length_scale_um},
     {"membrane.vertex_force_cap_pN", &Parameters::vertex_force_cap_pN},
+    {"membrane.total_area_modulus_uN_per_m", &Parameters::total_area_modulus_uN_per_m},
 }};
 
 }  // namespace

@@ -70,7 +70,8 @@ TEST(ConfigSchema, DescribesEveryOptionWithTypeUnitDefaultAndRange) {
   const auto& forces = membrane["properties"]["forces"];
   EXPECT_EQ(forces["type"], "array");
   EXPECT_EQ(forces["uniqueItems"], true);
-  EXPECT_EQ(forces["items"]["enum"].size(), 6u);
+  EXPECT_EQ(forces["items"]["enum"].size(), 7u);  // the paper's six and total_area
+  EXPECT_EQ(schema["properties"]["membrane"]["properties"]["forces"]["default"].size(), 6u);
   EXPECT_EQ(schema["properties"]["morphology"]["enum"],
             json({"stomatocyte-II", "discocyte", "echinocyte-III"}));
   for (const auto& option : rbcsim::config::option_table().options()) {

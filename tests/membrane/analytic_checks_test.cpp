@@ -124,6 +124,58 @@ TEST(VolumeTerm, ScaledSpherePointsInwardWithTheLawsMagnitude) {
   EXPECT_LT(largest_angle_rad, 0.01);
 }
 
+// Uniform dilation x -> (1 + eps) x of any closed mesh: A = (1 + eps)^2 A0 exactly, so
+// d = (1 + eps)^2 - 1 and E = K A0 d^2 / 2; A is homogeneous of degree 2 in the positions, so
+// (Euler) sum_i x_i . dA/dx_i = 2 A and the virial sum_i x_i . F_i = -2 K d A. Both kernels.
+TEST(TotalAreaTerm, UniformDilationGivesTheHarmonicEnergyAndVirial) {
+  const auto mesh = shapes::ellipsoid(3, Vec3(4.0, 3.0, 2.0));
+  for (const char* kernel : {"reference", "optimised"}) {
+    auto parameters = only({"total_area"});
+    parameters.kernel = kernel;
+    parameters.total_area_modulus_uN_per_m = 288000.0;
+    const MembraneModel model(mesh, parameters);
+    const double area0_um2 = rbcsim::mesh::surface_area_um2(mesh);
+    for (const double eps : {-0.004, 0.003}) {
+      std::vector<Vec3> dilated = mesh.positions_um;
+      for (auto& p : dilated) p *= 1.0 + eps;
+      const auto forces = compute(model, dilated);
+      const double d = std::pow(1.0 + eps, 2) - 1.0;
+      const auto& term = forces.term("total_area");
+      EXPECT_NEAR(forces.cell.total_area, d, 1e-13) << kernel;
+      EXPECT_NEAR(term.max_abs_deviation, std::abs(d), 1e-13) << kernel;
+      const double energy_pN_um = 0.5 * parameters.total_area_modulus_uN_per_m * area0_um2 * d * d;
+      EXPECT_NEAR(term.energy_pN_um, energy_pN_um, 1e-9 * energy_pN_um) << kernel;
+      double virial_pN_um = 0.0;
+      for (std::size_t v = 0; v < dilated.size(); ++v)
+        virial_pN_um += dilated[v].dot(term.forces_pN[v]);
+      const double expected_pN_um =
+          -2.0 * parameters.total_area_modulus_uN_per_m * d * area0_um2 * std::pow(1.0 + eps, 2);
+      EXPECT_NEAR(virial_pN_um, expected_pN_um, 1e-9 * std::abs(expected_pN_um)) << kernel;
+    }
+  }
+}
+
+// Not one of the paper's six: the default membrane leaves it out, and a non-finite shape fails
+// it loudly in both kernels.
+TEST(TotalAreaTerm, IsOffByDefaultAndFailsOnANonFiniteArea) {
+  EXPECT_EQ(MembraneParameters{}.forces, rbcsim::membrane::paper_force_term_names());
+  const auto mesh = shapes::sphere(2, 3.0);
+  for (const char* kernel : {"reference", "optimised"}) {
+    auto parameters = only({"total_area"});
+    parameters.kernel = kernel;
+    const MembraneModel model(mesh, parameters);
+    auto broken = mesh.positions_um;
+    broken[5].x() = std::nan("");
+    try {
+      compute(model, broken);
+      FAIL() << kernel << ": a NaN position passed";
+    } catch (const rbcsim::RuntimeFailure& failure) {
+      EXPECT_NE(std::string(failure.what()).find("membrane term 'total_area'"), std::string::npos)
+          << failure.what();
+    }
+  }
+}
+
 // The scaling between the distributions: on an equilateral pair of edge L0 folded about its edge
 // the `paper` and `gradient` bending forces coincide (bending_term.cpp), and the wing force is
 // Eq. 7's magnitude along the wing's normal.

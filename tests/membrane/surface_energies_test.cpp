@@ -204,9 +204,11 @@ TriangleMesh flat_pillow(int n) {
         const bool reversed = face == &bottom;
         std::array<std::array<std::int32_t, 3>, 2> halves;
         if ((i == 0 && j == n - 1) || (i == n - 1 && j == 0)) {
-          halves = {{{v[i][j], v[i + 1][j], v[i][j + 1]}, {v[i + 1][j], v[i + 1][j + 1], v[i][j + 1]}}};
+          halves = {
+              {{v[i][j], v[i + 1][j], v[i][j + 1]}, {v[i + 1][j], v[i + 1][j + 1], v[i][j + 1]}}};
         } else {
-          halves = {{{v[i][j], v[i + 1][j], v[i + 1][j + 1]}, {v[i][j], v[i + 1][j + 1], v[i][j + 1]}}};
+          halves = {
+              {{v[i][j], v[i + 1][j], v[i + 1][j + 1]}, {v[i][j], v[i + 1][j + 1], v[i][j + 1]}}};
         }
         for (auto half : halves) {
           if (reversed) std::swap(half[1], half[2]);

@@ -65,6 +65,9 @@ Vec3 centroid(const std::vector<Vec3>& positions_um) {
 // Eqs. 6-11 by hand: the force magnitude of one element of `term` at deviation d. Used as the
 // scale of the round-off tolerances (a vertex's force is a few element forces).
 double law_force_pN(const std::string& term, const MembraneParameters& p, double d) {
+  // The harmonic whole-area term: K |d| times a corner's |dA/dx|, about half an edge (L0).
+  if (term == "total_area")
+    return p.total_area_modulus_uN_per_m * std::abs(d) * p.force_length_scale_um;
   struct Law {
     double k_kBT;
     double length_um;

@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "common/errors.hpp"
+#include "membrane/parameters.hpp"
 #include "report/report.hpp"
+#include "report/run_directory.hpp"
 #include "report/run_fixtures.hpp"
 #include "support/run_rbcsim.hpp"
 #include "support/scratch_directory.hpp"
@@ -17,6 +19,20 @@ using rbcsim::testing::FixtureRun;
 using rbcsim::testing::parse_xml;
 using rbcsim::testing::write_file;
 using rbcsim::testing::write_run;
+
+// Term sets are named relative to the paper's six; a term beyond them is appended.
+TEST(DescribeTerms, NamesATermSetRelativeToThePapersSix) {
+  using rbcsim::report::describe_terms;
+  const auto paper = rbcsim::membrane::paper_force_term_names();
+  EXPECT_EQ(describe_terms(paper), "all six");
+  auto with_total_area = paper;
+  with_total_area.push_back("total_area");
+  EXPECT_EQ(describe_terms(with_total_area), "all six + total_area");
+  EXPECT_EQ(describe_terms({"link", "bend", "area", "volume", "total_area"}),
+            "without area_difference and total_curvature + total_area");
+  EXPECT_EQ(describe_terms({"total_area"}), "none of the paper's + total_area");
+  EXPECT_EQ(describe_terms({"link", "springs"}), "link and springs");
+}
 
 // The message of the InputError that building the report of `directories` throws.
 std::string report_error(const std::vector<std::filesystem::path>& directories) {

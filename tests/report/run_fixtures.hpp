@@ -16,7 +16,7 @@
 
 namespace rbcsim::testing {
 
-inline std::vector<std::string> all_terms() { return membrane::all_force_term_names(); }
+inline std::vector<std::string> all_terms() { return membrane::paper_force_term_names(); }
 
 // The paper's four-term model: without area difference and total curvature.
 inline std::vector<std::string> four_terms() {

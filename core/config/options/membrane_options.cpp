@@ -68,6 +68,14 @@ void add_limits(OptionTable& table) {
       .add_number("membrane.tau_total_curvature", "", kMembraneDefaults.tau_total_curvature,
                   "Limit tau_tc of the relative total curvature change (Eq. 11).")
       .above(0.0);
+  // Not in the paper: the bilayer's area incompressibility as a whole-membrane term (Fedosov et
+  // al. 2010's global area energy; Mirheo's ka_tot). docs/physics.md derives the default.
+  table
+      .add_number("membrane.total_area_modulus_uN_per_m", "uN/m",
+                  kMembraneDefaults.total_area_modulus_uN_per_m,
+                  "Modulus K of the whole-membrane area term, E = K (A - A0)^2 / (2 A0); acts "
+                  "only when membrane.forces names total_area (not one of the paper's six).")
+      .at_least(0.0);
 }
 
 void add_scales_and_variants(OptionTable& table) {
@@ -81,7 +89,9 @@ void add_scales_and_variants(OptionTable& table) {
                   "L0 of Table 2, the length in the denominator of Eqs. 7-11.")
       .above(0.0);
   table.add_choice_list("membrane.forces", membrane::all_force_term_names(),
-                        kMembraneDefaults.forces, "Force terms switched on.");
+                        kMembraneDefaults.forces,
+                        "Force terms switched on: the paper's six by default; total_area adds the "
+                        "whole-membrane area term.");
   table.add_choice("membrane.kernel", entry_names(membrane::membrane_kernel_table()),
                    kMembraneDefaults.kernel,
                    "Force kernel: the fused optimised one, or the plain reference it is tested "
