@@ -40,6 +40,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/registry.hpp"
 #include "membrane/force_terms.hpp"
 #include "membrane/hinge.hpp"
 #include "membrane/membrane_kernel.hpp"
@@ -63,12 +64,9 @@ Term term_of(std::string_view name) {
   return static_cast<Term>(found - kTermNames.begin());
 }
 
+// Every distribution of hinge.cpp's table has its fused twin here (the constructor checks).
 const FusedDistribution& find_fused_distribution(std::string_view name) {
-  for (const auto& entry : fused_distribution_table()) {
-    if (entry.name == name) return entry;
-  }
-  throw std::logic_error("the optimised membrane kernel has no distribution '" + std::string(name) +
-                         "'");
+  return find_entry(fused_distribution_table(), name, "membrane.distribution");
 }
 
 FusedConstants make_constants(const MembraneModel& model, const FusedDistribution& distribution) {
