@@ -2,6 +2,8 @@
 // run directories that break the contract (each must name the file and the problem).
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "common/errors.hpp"
 #include "membrane/parameters.hpp"
 #include "report/report.hpp"
@@ -42,6 +44,26 @@ std::string report_error(const std::vector<std::filesystem::path>& directories) 
     return error.what();
   }
   return "no error";
+}
+
+// The paper's moduli are an isolated patch's: the verdict compares that with them, and names the
+// tiled sheet's (the cell's membrane) as such instead of passing it off as the same test.
+TEST(ReportInputs, TheVerdictComparesTheIsolatedPatchWithThePapersModuli) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto calibrate = rbcsim::testing::calibrate_run();
+  calibrate.section["hexagonal"]["mu_uN_per_m"] = 7.34;
+  calibrate.section["hexagonal"]["isolated_patch_mu_uN_per_m"] = 9.9;
+  const auto documents = build_report(
+      read_run_directories({write_run(scratch.path() / "calibrate", calibrate)}));
+  std::map<std::string, std::string> verdicts;
+  for (const auto& row : documents.summary.at("verdict")) {
+    verdicts[row.at("comparison").get<std::string>()] = row.at("verdict").get<std::string>();
+  }
+  EXPECT_EQ(verdicts["calibrate hexagonal, isolated patch (the paper's set-up): mu (µN/m)"],
+            "agrees");  // 9.9 against 10.15: 2.5 %
+  EXPECT_EQ(verdicts["calibrate hexagonal, tiled sheet (the cell's membrane): mu (µN/m)"],
+            "differs");
+  EXPECT_EQ(verdicts["calibrate hexagonal, tiled sheet (the cell's membrane): K (µN/m)"], "agrees");
 }
 
 TEST(ReportInputs, HostileStringsAreEscapedEverywhere) {
