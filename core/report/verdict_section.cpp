@@ -33,7 +33,7 @@ bool measures_isolated_patch(const nlohmann::json& test) {
   return false;
 }
 
-void calibrate_rows(const RunDirectory& run, Table& table) {
+void calibrate_rows(const RunDirectory& run, const std::string& label, Table& table) {
   const auto& calibrate = run.section().object();
   const auto paper = calibrate.find("paper");
   if (paper == calibrate.end()) return;
@@ -49,16 +49,16 @@ void calibrate_rows(const RunDirectory& run, Table& table) {
       // patch tiled as a sheet (the cell's membrane): the paper's figures are the former's.
       const auto isolated = measured->find("isolated_patch_" + quantity);
       if (isolated != measured->end() && isolated->is_number()) {
-        modulus_row(
-            "calibrate " + test + ", isolated patch (the paper's set-up): " + key_title(quantity),
-            isolated->get<double>(), value.get<double>(), table);
+        modulus_row("calibrate " + label + ": " + test +
+                        ", isolated patch (the paper's set-up): " + key_title(quantity),
+                    isolated->get<double>(), value.get<double>(), table);
       }
       const auto ours = measured->find(quantity);
       if (ours == measured->end() || !ours->is_number()) continue;
       const std::string what =
           measures_isolated_patch(*measured) ? ", tiled sheet (the cell's membrane)" : "";
-      modulus_row("calibrate " + test + what + ": " + key_title(quantity), ours->get<double>(),
-                  value.get<double>(), table);
+      modulus_row("calibrate " + label + ": " + test + what + ": " + key_title(quantity),
+                  ours->get<double>(), value.get<double>(), table);
     }
   }
 }
@@ -103,7 +103,7 @@ Section build_verdict_section(const RunList& runs, const std::vector<Section>& s
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const auto& run = *runs[i];
     if (!run.succeeded()) continue;
-    if (run.command == "calibrate") calibrate_rows(run, table);
+    if (run.command == "calibrate") calibrate_rows(run, labels[i], table);
     if (run.command == "stretch") stretch_rows(run, labels[i], table);
     if (run.command == "capillary") capillary_rows(run, labels[i], table);
   }

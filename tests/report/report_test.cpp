@@ -69,7 +69,7 @@ TEST_F(ReportOfStandardRuns, OpensWithTheVerdictThenOneSectionPerExperimentThenT
       return row.at("comparison").template get<std::string>().starts_with(start);
     });
   };
-  EXPECT_TRUE(has_row("calibrate hexagonal"));
+  EXPECT_TRUE(has_row("calibrate discocyte, all six"));
   EXPECT_TRUE(has_row("stretch "));
   EXPECT_TRUE(has_row("capillary "));
   EXPECT_EQ(page_.find("script").size(), 0u);  // no JavaScript
