@@ -1,9 +1,11 @@
 #include "bench_reference.hpp"
 
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 
 #include "common/errors.hpp"
+#include "common_options.hpp"
 #include "config/config_sources.hpp"
 #include "config/embedded_share.hpp"
 #include "io/text_file.hpp"
@@ -35,20 +37,14 @@ std::map<int, double> figures_per_thread_count(const json& tree, const char* key
   }
   for (const auto& [threads, value] : object.items()) {
     const std::string path = std::string(key) + "." + threads;
-    std::size_t used = 0;
-    int count = 0;
-    try {
-      count = std::stoi(threads, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != threads.size() || count < 1) {
+    const auto count = whole_number(threads);
+    if (!count || *count < 1 || *count > std::numeric_limits<int>::max()) {
       throw InputError(std::string(source), path + ": a thread count must be a whole number >= 1");
     }
     if (!value.is_number() || !(value.get<double>() > 0.0)) {
       throw InputError(std::string(source), path + ": expected a positive number");
     }
-    figures[count] = value.get<double>();
+    figures[static_cast<int>(*count)] = value.get<double>();
   }
   return figures;
 }

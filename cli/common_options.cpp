@@ -41,17 +41,23 @@ std::string with_default(std::string help, std::string_view path) {
   return help + " (default: " + shown + ")";
 }
 
+std::optional<long long> whole_number(const std::string& text) {
+  std::size_t used = 0;
+  long long value = 0;
+  try {
+    value = std::stoll(text, &used);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (used != text.size()) return std::nullopt;
+  return value;
+}
+
 CLI::Validator whole_number_at_least(long long minimum) {
   return CLI::Validator(
       [minimum](const std::string& text) {
-        std::size_t used = 0;
-        long long value = 0;
-        try {
-          value = std::stoll(text, &used);
-        } catch (const std::exception&) {
-          used = 0;
-        }
-        if (used == 0 || used != text.size() || value < minimum) {
+        const auto value = whole_number(text);
+        if (!value || *value < minimum) {
           return in_quotes(text) + " is not a whole number >= " + std::to_string(minimum);
         }
         return std::string();

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -48,6 +49,9 @@ void add_checkpoint_options(CLI::App* command, CheckpointOptions& options, Commo
 // `help` followed by " (default: X)", X the option table's default of config key `path`: a help
 // text never states a default of its own (logic_error for a path that is not an option).
 std::string with_default(std::string help, std::string_view path);
+
+// `text` as a whole number (all of it: "2x" and "2.5" are not), or nullopt.
+std::optional<long long> whole_number(const std::string& text);
 
 // A check for an option that takes a whole number >= minimum; its complaint reads like rbcsim's
 // others (`--threads: "0" is not a whole number >= 1`), not CLI11's range text.
