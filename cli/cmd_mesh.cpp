@@ -100,12 +100,18 @@ void run_generate(const GenerateOptions& options) {
   if (settings.method == "energy") {
     header["source"] = cell.minimised ? "minimised" : "shipped";
     header["settings"] = shapes::to_json(settings.energy);
+    // The energies are the minimum's; the mesh is the minimum with its vertices redistributed
+    // over its surface (a shipped mesh's manifest entry holds both reports).
     if (cell.minimised) {
       header["minimisation"] = shapes::minimisation_json(*cell.minimised);
+      header["energy"] =
+          shapes::energy_json(cell.minimised->minimum, settings.subdivisions, settings.energy);
+      header["redistribution"] = shapes::redistribution_json(cell.minimised->redistribution);
     } else {
-      header["minimisation"] = cell.shipped_entry.value("minimisation", nlohmann::json());
+      for (const char* part : {"minimisation", "energy", "redistribution"}) {
+        header[part] = cell.shipped_entry.value(part, nlohmann::json());
+      }
     }
-    header["energy"] = shapes::energy_json(cell.mesh, settings.subdivisions, settings.energy);
   }
   header["morphology"] = shapes::morphology_json(cell.mesh);
   print_report(mesh::inspect_mesh(cell.mesh), options.json, header);

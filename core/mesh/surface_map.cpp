@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numbers>
+#include <stdexcept>
 
 #include "mesh/geometry.hpp"
 #include "mesh/icosphere.hpp"
@@ -142,6 +144,105 @@ void undo_folding_moves(const SurfaceMap& surface, const std::vector<Triangle>& 
   }
 }
 
+// Finds the triangle of a unit-sphere triangulation whose cone (the rays from the origin through
+// it) holds a direction, with a uniform grid over [-1, 1]^3: each triangle is filed in every cell
+// its spherical cap can reach (the box of its corners grown by the cap's height above the flat
+// triangle), so the cell of a direction lists every triangle that may hold it.
+class SphericalTriangleLocator {
+ public:
+  explicit SphericalTriangleLocator(const TriangleMesh& sphere) : sphere_(sphere) {
+    double longest_edge = 0.0;
+    for (const auto& triangle : sphere.triangles) {
+      for (int k = 0; k < 3; ++k) {
+        longest_edge = std::max(longest_edge, (corner(triangle, k) - corner(triangle, (k + 1) % 3)).norm());
+      }
+    }
+    cells_per_axis_ = std::max(1, static_cast<int>(2.0 / (2.0 * longest_edge)));
+    cell_size_ = 2.0 / cells_per_axis_;
+    cells_.resize(static_cast<std::size_t>(cells_per_axis_) * cells_per_axis_ * cells_per_axis_);
+    for (std::size_t t = 0; t < sphere.triangles.size(); ++t) file(static_cast<std::int32_t>(t));
+  }
+
+  struct Location {
+    std::int32_t triangle;
+    Vec3 barycentric;  // sums to 1, each >= 0 up to round-off
+  };
+
+  Location locate(const Vec3& direction) const {
+    Location best{-1, Vec3::Zero()};
+    double best_smallest = -std::numeric_limits<double>::infinity();
+    auto consider = [&](std::int32_t t) {
+      const Vec3 weights = cone_weights(t, direction);
+      const double sum = weights.sum();
+      if (!(sum > 0.0)) return;  // the opposite side of the sphere
+      const double smallest = weights.minCoeff() / sum;
+      if (smallest > best_smallest) {
+        best_smallest = smallest;
+        best = {t, weights / sum};
+      }
+    };
+    for (auto t : cells_[cell_of(direction)]) consider(t);
+    // Round-off can leave a direction on an edge just outside every filed triangle: then the
+    // whole mesh decides (never on a well-formed sphere in practice, but always correct).
+    if (best_smallest < -kInsideTolerance) {
+      for (std::size_t t = 0; t < sphere_.triangles.size(); ++t) consider(static_cast<std::int32_t>(t));
+    }
+    return best;
+  }
+
+ private:
+  static constexpr double kInsideTolerance = 1e-9;
+
+  const Vec3& corner(const Triangle& triangle, int k) const {
+    return sphere_.positions_um[triangle[k]];
+  }
+  // Unnormalised barycentric coordinates of the ray through `direction` in triangle t: the
+  // triple products with the opposite edges (all positive inside, for an outward triangle).
+  Vec3 cone_weights(std::int32_t t, const Vec3& direction) const {
+    const auto& triangle = sphere_.triangles[t];
+    const Vec3& a = corner(triangle, 0);
+    const Vec3& b = corner(triangle, 1);
+    const Vec3& c = corner(triangle, 2);
+    return {direction.dot(b.cross(c)), direction.dot(c.cross(a)), direction.dot(a.cross(b))};
+  }
+  int axis_cell(double coordinate) const {
+    return std::clamp(static_cast<int>((coordinate + 1.0) / cell_size_), 0, cells_per_axis_ - 1);
+  }
+  std::size_t cell_index(int i, int j, int k) const {
+    return static_cast<std::size_t>(i + cells_per_axis_ * (j + cells_per_axis_ * k));
+  }
+  std::size_t cell_of(const Vec3& direction) const {
+    return cell_index(axis_cell(direction.x()), axis_cell(direction.y()), axis_cell(direction.z()));
+  }
+  void file(std::int32_t t) {
+    const auto& triangle = sphere_.triangles[t];
+    const Vec3& a = corner(triangle, 0);
+    const Vec3 normal = (corner(triangle, 1) - a).cross(corner(triangle, 2) - a).normalized();
+    const double cap_height = 1.0 - std::abs(normal.dot(a)) + kInsideTolerance;
+    Vec3 low = a;
+    Vec3 high = a;
+    for (int k = 1; k < 3; ++k) {
+      low = low.cwiseMin(corner(triangle, k));
+      high = high.cwiseMax(corner(triangle, k));
+    }
+    const Vec3 margin = Vec3::Constant(cap_height);
+    low -= margin;
+    high += margin;
+    for (int k = axis_cell(low.z()); k <= axis_cell(high.z()); ++k) {
+      for (int j = axis_cell(low.y()); j <= axis_cell(high.y()); ++j) {
+        for (int i = axis_cell(low.x()); i <= axis_cell(high.x()); ++i) {
+          cells_[cell_index(i, j, k)].push_back(t);
+        }
+      }
+    }
+  }
+
+  const TriangleMesh& sphere_;
+  int cells_per_axis_ = 1;
+  double cell_size_ = 2.0;
+  std::vector<std::vector<std::int32_t>> cells_;
+};
+
 }  // namespace
 
 TriangleMesh relax_parameter_mesh(const SurfaceMap& surface, TriangleMesh parameter_mesh,
@@ -168,6 +269,33 @@ TriangleMesh relaxed_parameter_icosphere(const SurfaceMap& surface, int subdivis
     parameter_mesh = relax_parameter_mesh(surface, subdivide_on_sphere(parameter_mesh), relaxation);
   }
   return parameter_mesh;
+}
+
+SurfaceMap piecewise_linear_map(const TriangleMesh& parameter_sphere, const TriangleMesh& surface) {
+  if (parameter_sphere.triangles != surface.triangles ||
+      parameter_sphere.vertex_count() != surface.vertex_count()) {
+    throw std::invalid_argument("piecewise_linear_map: the meshes differ in connectivity");
+  }
+  constexpr double kUnitTolerance = 1e-9;
+  for (const auto& point : parameter_sphere.positions_um) {
+    if (std::abs(point.norm() - 1.0) > kUnitTolerance) {
+      throw std::invalid_argument("piecewise_linear_map: a parameter vertex is off the unit sphere");
+    }
+  }
+  struct State {
+    TriangleMesh sphere;
+    TriangleMesh surface;
+    std::unique_ptr<SphericalTriangleLocator> locator;
+  };
+  auto state = std::make_shared<State>(State{parameter_sphere, surface, nullptr});
+  state->locator = std::make_unique<SphericalTriangleLocator>(state->sphere);
+  return [state](const Vec3& direction) {
+    const auto [t, weights] = state->locator->locate(direction.normalized());
+    const auto& triangle = state->surface.triangles[t];
+    const auto& positions = state->surface.positions_um;
+    return Vec3(weights[0] * positions[triangle[0]] + weights[1] * positions[triangle[1]] +
+                weights[2] * positions[triangle[2]]);
+  };
 }
 
 TriangleMesh mesh_surface(const SurfaceMap& surface, int subdivisions,

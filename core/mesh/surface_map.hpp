@@ -37,6 +37,17 @@ TriangleMesh relax_parameter_mesh(const SurfaceMap& surface, TriangleMesh parame
 // The image of a parameter mesh: same triangles, positions surface(p).
 TriangleMesh map_mesh(const SurfaceMap& surface, TriangleMesh parameter_mesh);
 
+// The piecewise-linear map of a triangulated cell onto its own surface: `parameter_sphere` is a
+// triangulation of the unit sphere (every vertex |p| = 1) with the connectivity of `surface`, and
+// a direction u maps to the point of `surface`'s triangle whose spherical counterpart the ray
+// through u crosses, at the same barycentric coordinates (central projection onto the flat
+// parameter triangle). So parameter vertex i maps to surface vertex i, and the map is a
+// homeomorphism onto the surface whenever `surface` is embedded. With relax_parameter_mesh it
+// evens out the triangles of a mesh that has no smooth map (a shape minimised as a mesh) while
+// every vertex stays on the mesh's surface. Throws std::invalid_argument for meshes of different
+// connectivity or parameter vertices off the unit sphere.
+SurfaceMap piecewise_linear_map(const TriangleMesh& parameter_sphere, const TriangleMesh& surface);
+
 // map_mesh(surface, relaxed_parameter_icosphere(...)).
 TriangleMesh mesh_surface(const SurfaceMap& surface, int subdivisions,
                           const RelaxationSettings& relaxation = {});

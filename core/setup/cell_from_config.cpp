@@ -87,6 +87,8 @@ shapes::NamedCellSettings named_cell_settings_from(const config::Config& config,
   energy.perturbation_um = config.number("mesh.energy.perturbation_um");
   energy.force_tolerance_pN = config.number("mesh.energy.force_tolerance_pN");
   energy.max_iterations = static_cast<std::size_t>(config.integer("mesh.energy.max_iterations"));
+  energy.redistribution.iterations = config.integer("mesh.energy.redistribution_sweeps");
+  energy.redistribution.step_fraction = config.number("mesh.energy.redistribution_step");
   const std::string key = "mesh.energy.relaxed_area_difference." + std::string(shape);
   if (config::option_table().find(key) != nullptr) {
     energy.relaxed_area_difference = config.number(key);

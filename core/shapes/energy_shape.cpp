@@ -9,6 +9,7 @@
 #include "common/format.hpp"
 #include "mesh/geometry.hpp"
 #include "mesh/icosphere.hpp"
+#include "mesh/inspection.hpp"
 #include "mesh/self_intersection.hpp"
 #include "mesh/topology.hpp"
 #include "mesh/transform.hpp"
@@ -66,6 +67,48 @@ void perturb(std::span<Vec3> positions_um, std::uint64_t seed, double amplitude_
 
 double volume_for(double reduced_volume, double area_um2) {
   return reduced_volume * std::pow(area_um2, 1.5) / (6.0 * std::sqrt(std::numbers::pi));
+}
+
+// Area-weighted outward normal of every vertex, unit length.
+std::vector<Vec3> vertex_normals(const mesh::TriangleMesh& shape) {
+  std::vector<Vec3> normals(shape.vertex_count(), Vec3::Zero());
+  for (const auto& triangle : shape.triangles) {
+    const Vec3 area_vector = mesh::triangle_area_vector(shape.positions_um, triangle);
+    for (auto v : triangle) normals[v] += area_vector;
+  }
+  for (auto& normal : normals) normal.normalize();
+  return normals;
+}
+
+// Moves every vertex by the same distance along its normal so that the mesh has the `target`
+// reduced volume, searched by bisection within about a quarter of the mean edge either way (v is
+// monotonic in so small an offset; it rises with it on a discocyte and falls on a spiculated
+// body). False, and the mesh unchanged, when the target lies beyond.
+bool offset_to_reduced_volume(mesh::TriangleMesh& shape, double target) {
+  const auto start = shape.positions_um;
+  const auto normals = vertex_normals(shape);
+  const double reach = 0.25 * std::sqrt(mesh::surface_area_um2(shape) /
+                                       static_cast<double>(shape.triangle_count()));
+  auto place = [&](double offset) {
+    for (std::size_t v = 0; v < start.size(); ++v) {
+      shape.positions_um[v] = start[v] + offset * normals[v];
+    }
+    return mesh_reduced_volume(shape);
+  };
+  double low = -reach;
+  double high = reach;
+  const double at_low = place(low);
+  const double at_high = place(high);
+  if ((at_low - target) * (at_high - target) > 0.0) {
+    shape.positions_um = start;
+    return false;
+  }
+  for (int step = 0; step < kBisectionSteps; ++step) {
+    const double middle = 0.5 * (low + high);
+    ((place(middle) < target) == (at_high > at_low) ? low : high) = middle;
+  }
+  place(0.5 * (low + high));
+  return true;
 }
 
 // One state of a path: what the model holds while FIRE minimises.
@@ -228,6 +271,8 @@ nlohmann::ordered_json to_json(const EnergyShapeSettings& settings) {
       {"perturbation_um", settings.perturbation_um},
       {"force_tolerance_pN", settings.force_tolerance_pN},
       {"max_iterations", settings.max_iterations},
+      {"redistribution_sweeps", settings.redistribution.iterations},
+      {"redistribution_step", settings.redistribution.step_fraction},
   };
 }
 
@@ -255,6 +300,50 @@ mesh::TriangleMesh oblate_spheroid(int subdivisions, double reduced_volume, doub
   auto spheroid = squash(0.5 * (low + high));
   mesh::scale_to_area(spheroid, area_um2);
   return spheroid;
+}
+
+mesh::TriangleMesh redistribute_on_surface(const mesh::TriangleMesh& shape, int subdivisions,
+                                           const mesh::RelaxationSettings& relaxation,
+                                           Redistribution& record) {
+  const auto before = mesh::inspect_mesh(shape);
+  record = {};
+  record.sweeps = relaxation.iterations;
+  record.min_angle_before_deg = record.min_angle_deg = before.min_angle_deg;
+  record.max_angle_before_deg = record.max_angle_deg = before.max_angle_deg;
+  if (relaxation.iterations == 0) {
+    record.outcome = "not asked for";
+    return shape;
+  }
+  const auto sphere = mesh::unit_icosphere(subdivisions);
+  const auto surface = mesh::piecewise_linear_map(sphere, shape);
+  auto result = mesh::map_mesh(surface, mesh::relax_parameter_mesh(surface, sphere, relaxation));
+  // Vertices inside the minimum's flat triangles cut its corners: a little area and volume is
+  // lost. Given back by one uniform offset along the vertex normals (to the reduced volume) and
+  // one uniform scale (to the area), which change the triangles' angles least: restoring along
+  // the constraints' gradients would move the sharpest features (a cup's lip) most.
+  const auto on_surface = result.positions_um;
+  if (!offset_to_reduced_volume(result, mesh::reduced_volume(before.area_um2, before.volume_um3))) {
+    record.outcome = "not kept: the smoothing cut off features (the reduced volume is not "
+                     "restored by a uniform offset of a quarter of an edge)";
+    return shape;
+  }
+  mesh::scale_to_area(result, before.area_um2);
+  const auto after = mesh::inspect_mesh(result);
+  if (!(after.min_angle_deg > before.min_angle_deg)) {
+    record.outcome = "not kept: the smallest angle would fall from " +
+                     format_number(before.min_angle_deg) + " to " +
+                     format_number(after.min_angle_deg) + " deg";
+    return shape;
+  }
+  record.kept = true;
+  record.outcome = "kept";
+  record.min_angle_deg = after.min_angle_deg;
+  record.max_angle_deg = after.max_angle_deg;
+  for (std::size_t v = 0; v < on_surface.size(); ++v) {
+    record.largest_restoring_move_um = std::max(record.largest_restoring_move_um,
+                                                (result.positions_um[v] - on_surface[v]).norm());
+  }
+  return result;
 }
 
 EnergyShape minimise_shape(int subdivisions, const EnergyShapeSettings& settings,
@@ -289,14 +378,17 @@ EnergyShape minimise_shape(int subdivisions, const EnergyShapeSettings& settings
     throw RuntimeFailure("the shape minimisation found no valid minimum: " + reasons);
   }
   shape.best_trial = *best;
-  shape.mesh.triangles = shape.skeleton_reference.triangles;
-  shape.mesh.positions_um = std::move(best_positions);
+  shape.minimum.triangles = shape.skeleton_reference.triangles;
+  shape.minimum.positions_um = std::move(best_positions);
   shape.energies = shape.trials[shape.best_trial].energies;
   shape.reduced_area_difference = membrane::reduced_area_difference(
-      mesh::curvature_sums(shape.mesh.positions_um, topology).signed_um,
-      mesh::surface_area_um2(shape.mesh));
-  mesh::translate_centroid_to_origin(shape.mesh);
-  mesh::align_principal_axes(shape.mesh);
+      mesh::curvature_sums(shape.minimum.positions_um, topology).signed_um,
+      mesh::surface_area_um2(shape.minimum));
+  mesh::translate_centroid_to_origin(shape.minimum);
+  mesh::align_principal_axes(shape.minimum);
+  shape.mesh = redistribute_on_surface(shape.minimum, subdivisions, settings.redistribution,
+                                       shape.redistribution);
+  mesh::round_to_single_precision(shape.minimum);
   mesh::round_to_single_precision(shape.mesh);
   return shape;
 }

@@ -22,6 +22,7 @@
 
 #include "common/registry.hpp"
 #include "membrane/surface_energies.hpp"
+#include "mesh/surface_map.hpp"
 #include "mesh/triangle_mesh.hpp"
 #include "shapes/bilayer_couple.hpp"
 
@@ -69,6 +70,16 @@ struct EnergyShapeSettings {
   double perturbation_um = 0.02;        // amplitude of the seeded displacement at every stage
   double force_tolerance_pN = 1e-7;     // converged: every vertex's projected force below this
   std::size_t max_iterations = 300000;  // of the final minimisation
+
+  // The minimum's vertices slid over its own surface to even out its triangles
+  // (redistribute_on_surface): the minimisation moves vertices tangentially to lower the
+  // skeleton's shear energy about its reference, leaving angles of 36-92 deg on a discocyte,
+  // and that in-plane strain is lost once the shape is the stress-free mesh of a flow run,
+  // where such triangles fail first. Kept only when it makes the smallest angle larger (on a
+  // shape whose features the triangles do not resolve, an echinocyte's single-vertex spikes or a
+  // 162-vertex cup's lip, the smoothing cuts them off and makes the triangles worse). 0 sweeps
+  // ships the minimum itself.
+  mesh::RelaxationSettings redistribution{.iterations = 200, .step_fraction = 0.8};
 };
 
 struct EnergyShapeTrial {
@@ -85,11 +96,31 @@ struct EnergyShapeTrial {
   bool valid() const { return !failure && converged && self_intersections == 0; }
 };
 
+// What redistributing the minimum's vertices over its surface changed.
+struct Redistribution {
+  int sweeps = 0;
+  // Whether the shape is the redistributed minimum (its smallest angle grew) or the minimum as
+  // found, and why.
+  bool kept = false;
+  std::string outcome;
+  // Restoring the area and volume moves the vertices off the minimum's (piecewise-flat) surface,
+  // along its normals, by at most this.
+  double largest_restoring_move_um = 0.0;
+  double min_angle_before_deg = 0.0;
+  double max_angle_before_deg = 0.0;
+  double min_angle_deg = 0.0;
+  double max_angle_deg = 0.0;
+};
+
 struct EnergyShape {
-  // The winning trial's minimum, centred, principal axes on x, y, z, and its coordinates rounded
-  // to single precision as its STL file stores them, so that a shape read back from its file is
-  // the shape generated (the stress-free reference of every run is the same either way).
+  // The winning trial's minimum with its vertices redistributed over its surface, centred,
+  // principal axes on x, y, z, and its coordinates rounded to single precision as its STL file
+  // stores them, so that a shape read back from its file is the shape generated (the stress-free
+  // reference of every run is the same either way).
   mesh::TriangleMesh mesh;
+  // The minimum itself, in the same frame (its energies are the shape's).
+  mesh::TriangleMesh minimum;
+  Redistribution redistribution;
   mesh::TriangleMesh skeleton_reference;
   BilayerCoupleEnergies energies;
   double reduced_area_difference = 0.0;  // Delta a of the minimum (realised, not relaxed)
@@ -114,6 +145,16 @@ BilayerCoupleParameters bilayer_couple_parameters(const EnergyShapeSettings& set
 // The settings as JSON, member names as in the config's mesh.energy.* keys (without the shape's
 // own relaxed_area_difference.<shape> suffix): what a shipped shape was generated with.
 nlohmann::ordered_json to_json(const EnergyShapeSettings& settings);
+
+// `shape`'s vertices slid over its own surface (mesh::piecewise_linear_map on the unit icosphere of
+// `subdivisions`, whose connectivity it must have) by `relaxation`, then moved by one uniform
+// offset along the vertex normals to the shape's reduced volume and scaled to its area: returned
+// when its smallest angle is larger than the shape's, else `shape` itself (also when an offset of
+// a quarter of an edge does not restore the reduced volume: the smoothing cut off a feature the
+// triangles cannot follow). `record` says which and why.
+mesh::TriangleMesh redistribute_on_surface(const mesh::TriangleMesh& shape, int subdivisions,
+                                           const mesh::RelaxationSettings& relaxation,
+                                           Redistribution& record);
 
 // The skeleton's reference at a level: unit_icosphere(subdivisions) scaled along z to an oblate
 // spheroid of `reduced_volume` (of the mesh itself, by bisection on the axis ratio), then to

@@ -79,4 +79,16 @@ nlohmann::ordered_json minimisation_json(const EnergyShape& shape) {
   return {{"best_trial", shape.best_trial}, {"seconds", seconds}, {"trials", trials}};
 }
 
+nlohmann::ordered_json redistribution_json(const Redistribution& redistribution) {
+  return {{"sweeps", redistribution.sweeps},
+          {"kept", redistribution.kept},
+          {"outcome", redistribution.outcome},
+          {"largest_restoring_move_um", redistribution.largest_restoring_move_um},
+          {"angles_before_deg",
+           {{"min", redistribution.min_angle_before_deg},
+            {"max", redistribution.max_angle_before_deg}}},
+          {"angles_deg",
+           {{"min", redistribution.min_angle_deg}, {"max", redistribution.max_angle_deg}}}};
+}
+
 }  // namespace rbcsim::shapes

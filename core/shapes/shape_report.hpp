@@ -22,4 +22,7 @@ nlohmann::ordered_json energy_json(const mesh::TriangleMesh& mesh, int subdivisi
 // Trials (seed, iterations, converged, largest force, seconds, total energy) and the winner.
 nlohmann::ordered_json minimisation_json(const EnergyShape& shape);
 
+// What redistributing the minimum's vertices changed (EnergyShape::redistribution).
+nlohmann::ordered_json redistribution_json(const Redistribution& redistribution);
+
 }  // namespace rbcsim::shapes

@@ -178,6 +178,20 @@ void add_energy_path_options(OptionTable& table) {
           "mesh.energy.max_iterations", "", static_cast<int>(defaults.max_iterations),
           "FIRE iterations of the final minimisation, at most; more is a failure (exit 1).")
       .at_least(1);
+  table
+      .add_integer("mesh.energy.redistribution_sweeps", "", defaults.redistribution.iterations,
+                   "Sweeps of tangential smoothing that slide the minimum's vertices over its own "
+                   "surface to even out its triangles before it becomes the stress-free mesh "
+                   "(reduced volume and area then restored); kept only if its smallest angle "
+                   "grows. 0 ships the minimum as found.")
+      .at_least(0)
+      .at_most(100000);
+  table
+      .add_number("mesh.energy.redistribution_step", "", defaults.redistribution.step_fraction,
+                  "Fraction of the way to its triangles' area-weighted centroid a vertex slides "
+                  "per sweep.")
+      .above(0.0)
+      .at_most(1.0);
 }
 
 }  // namespace
