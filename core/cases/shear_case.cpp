@@ -379,7 +379,11 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
   coupling::CoupledSimulation simulation(
       shear_fluid(box, engine.fluid, settings.boundary, flow_rate_lu), units, coupling,
       box_origin_um(box, dx_um));
-  simulation.add_cell(membrane::MembraneModel(cell, model.parameters()), cell.positions_um);
+  // With the viscosity scaled down, the membrane's viscosity follows, so its ratio to the
+  // plasma's (the Boussinesq number) is the physical one.
+  auto membrane_parameters = model.parameters();
+  membrane_parameters.viscosity_Pa_s_um /= plan.viscosity_scale;
+  simulation.add_cell(membrane::MembraneModel(cell, membrane_parameters), cell.positions_um);
   const double time_unit_rate = plan.strain_rate_lu / units.dt_s();
   const auto sample_interval_steps = steps_for(
       settings.check_interval_strain / static_cast<double>(kSamplesPerCheck), plan.strain_rate_lu);

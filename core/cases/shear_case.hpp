@@ -15,10 +15,11 @@
 //   "walls"         two bounce-back walls moving at -/+ rate * gap / 2, the gap between them.
 // The fluid starts with the linear profile, so only the cell's disturbance has to develop.
 //
-// Time scales (the viscosity trick). The membrane has no mass and no viscosity, and the
-// cytoplasm is the same fluid as the medium, so the steady shape depends only on the capillary
+// Time scales (the viscosity trick). The membrane has no mass, and its viscosity (if any) and the
+// cytoplasm's are fixed ratios to the medium's, so the steady shape depends only on the capillary
 // number Ca = mu_medium * rate * R / G_s, as long as the cell Reynolds number
-// Re = rate * R^2 / nu stays << 1. Simulating rate * s with the viscosity divided by s keeps Ca;
+// Re = rate * R^2 / nu stays << 1. Simulating rate * s with the viscosity divided by s (the
+// membrane's too) keeps Ca;
 // the lattice shear rate grows by s^2 (dt grows by s), so the steps per unit strain drop by s^2,
 // and Re grows by s^2. With viscosity_scaling the case picks the largest s >= 1 that keeps
 // Re <= max_reynolds_number: every low rate then costs as few steps per strain as the

@@ -24,10 +24,13 @@
 namespace rbcsim::coupling {
 
 // Where the lattice sits in space: node (i, j, k) at origin_um + dx_um * (i, j, k), the
-// node-centred convention of the geometry module (geometry/lattice_grid.hpp).
+// node-centred convention of the geometry module (geometry/lattice_grid.hpp); one lattice
+// velocity is dx_um / dt_s, one pN is lattice_force_per_pN lattice forces.
 struct LatticeFrame {
   Vec3 origin_um = Vec3::Zero();
   double dx_um = 1.0;
+  double dt_s = 1.0;
+  double lattice_force_per_pN = 1.0;
 
   Vec3 to_lattice(const Vec3& position_um) const { return (position_um - origin_um) / dx_um; }
   Vec3 to_um(const Vec3& position_lu) const { return origin_um + dx_um * position_lu; }
@@ -54,6 +57,11 @@ class Cell {
   std::span<const Vec3> total_forces_pN() const { return total_forces_pN_; }
   // The fluid velocity interpolated at the vertices in the latest step, lattice units.
   std::span<const Vec3> velocities_lu() const { return velocities_lu_; }
+  // With membrane viscosity: the velocities the latest friction forces were computed at
+  // (predict_membrane_velocities), lattice units, and the conjugate-gradient iterations that
+  // found them.
+  std::span<const Vec3> membrane_velocities_lu() const { return membrane_velocities_lu_; }
+  std::size_t friction_iterations() const { return friction_iterations_; }
   // Mean vertex position, summed in vertex order (thread-count independent), lattice units.
   Vec3 centroid_lu() const;
 
@@ -78,6 +86,17 @@ class Cell {
   void restore_state(StateArchive& archive, const std::string& prefix, const LatticeFrame& frame);
 
  private:
+  // Membrane viscosity, implicit (docs/physics.md, "Membrane viscosity"): the friction -Gamma V
+  // spread in a step is taken at the velocities V that solve (M + Gamma) V = M U, U the fluid
+  // velocity interpolated in the previous step (what the vertices would move with without the
+  // friction) and M the fluid mass each vertex lends (lend_masses): V is the velocity the fluid
+  // at the vertices takes once it has felt the friction. The vertices still move with the fluid
+  // (no slip). The friction is two orders of magnitude too stiff for an explicit coupling at the
+  // paper's lattice; this keeps it stable and, in a steady flow, V = U.
+  void predict_membrane_velocities(const LatticeFrame& frame);
+  void lend_masses();
+  static constexpr double kFrictionTolerance = 1e-4;
+
   membrane::MembraneModel model_;
   std::vector<Vec3> positions_lu_;
   std::vector<Vec3> previous_positions_lu_;
@@ -88,6 +107,13 @@ class Cell {
   std::vector<Vec3> total_forces_pN_;
   std::vector<Vec3> forces_lu_;
   std::vector<Vec3> velocities_lu_;
+  // With membrane viscosity (predict_membrane_velocities): the velocities of the friction, in
+  // lattice units and um/s, and the fluid mass lent to each vertex.
+  std::vector<Vec3> membrane_velocities_lu_;
+  std::vector<Vec3> membrane_velocities_um_per_s_;
+  std::vector<double> lent_masses_;
+  std::vector<double> weight_density_;  // per lattice node, zero between steps
+  std::size_t friction_iterations_ = 0;
   ibm::InterpolationStencil stencil_;
   ibm::PointAdvancer advancer_;
 };

@@ -50,7 +50,9 @@ CoupledSimulation::CoupledSimulation(std::unique_ptr<lattice::FluidSolver> fluid
     : fluid_(std::move(fluid)),
       units_(units),
       parameters_(std::move(parameters)),
-      frame_{origin_um, units.to_physical(units::PhysicalUnit::length_um, 1.0)},
+      frame_{origin_um, units.to_physical(units::PhysicalUnit::length_um, 1.0),
+             units.to_physical(units::PhysicalUnit::time_s, 1.0),
+             units.to_lattice(units::PhysicalUnit::force_pN, 1.0)},
       grid_(grid_view_of(*fluid_)),
       kernel_(&ibm::find_delta_kernel(parameters_.kernel)),
       advance_scheme_(&ibm::find_point_advance_scheme(parameters_.point_advance)),
@@ -153,7 +155,13 @@ void CoupledSimulation::advance_fluid() {
 }
 
 void CoupledSimulation::advance_cells() {
-  for (auto& cell : cells_) cell.interpolate_and_advance(grid_, fluid_->velocity());
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    try {
+      cells_[k].interpolate_and_advance(grid_, fluid_->velocity());
+    } catch (const RuntimeFailure& failure) {
+      fail(k, failure.what());
+    }
+  }
 }
 
 void CoupledSimulation::check_cells() {

@@ -44,6 +44,9 @@ struct TermContext {
   const MeshStencils& stencils;
   const ReferenceState& reference;
   const CellGeometry& geometry;  // of positions_um, measured by the caller
+  // Vertex velocities, um/s, for the terms that depend on them (dissipative terms, later thermal
+  // noise); empty: every vertex at rest.
+  std::span<const Vec3> velocities_um_per_s = {};
 };
 
 // The output of one term.

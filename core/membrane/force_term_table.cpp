@@ -32,6 +32,11 @@ std::vector<ForceTermEntry> built_in_terms() {
        [](const MembraneParameters& p, const ReferenceState& r) -> std::unique_ptr<ForceTerm> {
          return std::make_unique<TotalAreaTerm>(p, r);
        }},
+      {"viscosity",
+       [](const MembraneParameters& p, const ReferenceState&) -> std::unique_ptr<ForceTerm> {
+         return std::make_unique<ViscosityTerm>(p);
+       },
+       true},
   };
 }
 
@@ -56,6 +61,14 @@ std::vector<std::unique_ptr<ForceTerm>> make_force_terms(std::span<const std::st
 }
 
 std::vector<std::string> all_force_term_names() { return force_term_registry().names(); }
+
+std::vector<std::string> elastic_force_term_names() {
+  std::vector<std::string> names;
+  for (const auto& entry : force_term_table()) {
+    if (!entry.dissipative) names.emplace_back(entry.name);
+  }
+  return names;
+}
 
 std::vector<std::string> paper_force_term_names() {
   return {"link", "bend", "area", "volume", "area_difference", "total_curvature"};

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "common/registry.hpp"
+#include "membrane/edge_friction.hpp"
 #include "membrane/force_law.hpp"
 #include "membrane/force_term.hpp"
 #include "membrane/hinge.hpp"
@@ -68,6 +69,20 @@ class TotalAreaTerm final : public ForceTerm {
 
 // The total_area term's failure (both kernels): RuntimeFailure for a non-finite deviation.
 [[noreturn]] void fail_non_finite_total_area(double deviation);
+
+// Membrane viscosity (not in the paper; Fedosov et al. 2010): friction on every edge from the
+// relative velocity of its vertices (edge_friction.hpp), eta_m = viscosity_Pa_s_um shared by
+// viscosity_split. Dissipative: its forces depend on TermContext::velocities_um_per_s (none at
+// rest), it has no energy (energy_pN_um is 0) and no limit, and MembraneModel adds it after the
+// force cap of the elastic terms.
+class ViscosityTerm final : public ForceTerm {
+ public:
+  explicit ViscosityTerm(const MembraneParameters& parameters);
+  void evaluate(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
+
+ private:
+  EdgeFrictionParameters friction_;
+};
 
 // Common loop of the three angle-based terms (length L0): per edge, the term's HingeLoad is
 // handed to the chosen distribution, which writes the hinge's four slots.
@@ -138,6 +153,10 @@ struct ForceTermEntry {
   std::string_view name;
   std::unique_ptr<ForceTerm> (*make)(const MembraneParameters& parameters,
                                      const ReferenceState& reference);
+  // A dissipative term (its force depends on the vertex velocities, it has no energy): evaluated
+  // by MembraneModel after the kernel and added to the total after the force cap, whatever the
+  // kernel. Registered after every elastic term.
+  bool dissipative = false;
 };
 // The registry (common/registry.hpp): the six terms above, and any a program or a test adds
 // (docs/architecture.md, "Adding a force term"). force_term_table() is its entries.

@@ -32,15 +32,24 @@ struct MembraneWorkspace {
   TermScratch scratch;
   // The optimised kernel's.
   OptimisedScratch optimised;
+  // MembraneModel's, for the dissipative terms (both kernels): their geometry, scratch and
+  // forces.
+  CellGeometry dissipative_geometry;
+  TermScratch dissipative_scratch;
+  std::vector<TermForces> dissipative;
 };
 
-// One implementation of the membrane forces of a model. Built once per model; compute() reads
-// the model's mesh, reference and parameters, so a kernel never outlives or copies them.
+// One implementation of the elastic membrane forces of a model (the terms of
+// MembraneModel::kernel_term_names(); the dissipative ones are the model's own). Built once per
+// model; compute() reads the model's mesh, reference and parameters, so a kernel never outlives
+// or copies them.
 class MembraneKernel {
  public:
   virtual ~MembraneKernel() = default;
   virtual MembraneWorkspace make_workspace(const MembraneModel& model) const = 0;
-  // The contract of MembraneModel::compute (positions already checked to be one per vertex).
+  // The contract of MembraneModel::compute for the kernel's terms, the first
+  // kernel_term_names().size() entries of forces.terms (positions already checked to be one per
+  // vertex).
   virtual void compute(const MembraneModel& model, std::span<const Vec3> positions_um,
                        MembraneWorkspace& workspace, MembraneForces& forces,
                        ForceDetail detail) const = 0;

@@ -54,11 +54,24 @@ MembraneModel::MembraneModel(const mesh::TriangleMesh& mesh, ReferenceState refe
   require_known_term_names(parameters_.forces);
   find_hinge_distribution(parameters_.distribution);  // reject an unknown name even if unused
   const auto& kernel = find_membrane_kernel(parameters_.kernel);
-  for (const auto& entry : force_term_table()) {
-    if (std::find(parameters_.forces.begin(), parameters_.forces.end(), entry.name) !=
-        parameters_.forces.end()) {
-      term_names_.push_back(entry.name);
+  auto enabled = [&](const ForceTermEntry& entry) {
+    return std::find(parameters_.forces.begin(), parameters_.forces.end(), entry.name) !=
+           parameters_.forces.end();
+  };
+  // Elastic terms first, then the dissipative ones (registry order within each).
+  for (const bool dissipative : {false, true}) {
+    for (const auto& entry : force_term_table()) {
+      if (entry.dissipative == dissipative && enabled(entry)) term_names_.push_back(entry.name);
     }
+    if (!dissipative) kernel_term_count_ = term_names_.size();
+  }
+  if (has_dissipative_terms()) {
+    const auto names = std::span(term_names_).subspan(kernel_term_count_);
+    dissipative_terms_ = make_force_terms(names, parameters_, reference_);
+    stencils_ = std::make_unique<MeshStencils>(MeshStencils::build(triangles_, topology_));
+  }
+  if (std::find(term_names_.begin(), term_names_.end(), "viscosity") != term_names_.end()) {
+    friction_ = edge_friction_for(parameters_.viscosity_Pa_s_um, parameters_.viscosity_split);
   }
   kernel_ = kernel.make(*this);
 }
@@ -67,7 +80,23 @@ MembraneModel::~MembraneModel() = default;
 MembraneModel::MembraneModel(MembraneModel&&) noexcept = default;
 MembraneModel& MembraneModel::operator=(MembraneModel&&) noexcept = default;
 
-MembraneWorkspace MembraneModel::make_workspace() const { return kernel_->make_workspace(*this); }
+MembraneWorkspace MembraneModel::make_workspace() const {
+  auto workspace = kernel_->make_workspace(*this);
+  if (has_dissipative_terms()) {
+    const auto edges = topology_.edge_count();
+    const auto triangles = topology_.triangle_count();
+    const auto elements = std::max(edges, triangles);
+    workspace.dissipative_geometry = CellGeometry(triangles, edges);
+    workspace.dissipative_scratch = TermScratch{std::vector<double>(elements),
+                                                std::vector<double>(elements),
+                                                std::vector<Vec3>(4 * edges), 0.0};
+    for (auto name : std::span(term_names_).subspan(kernel_term_count_)) {
+      workspace.dissipative.push_back(
+          {std::string(name), std::vector<Vec3>(vertex_count(), Vec3::Zero())});
+    }
+  }
+  return workspace;
+}
 
 MembraneForces MembraneModel::make_forces() const {
   MembraneForces forces;
@@ -78,8 +107,10 @@ MembraneForces MembraneModel::make_forces() const {
   return forces;
 }
 
-void MembraneModel::compute(std::span<const Vec3> positions_um, MembraneWorkspace& workspace,
-                            MembraneForces& forces, ForceDetail detail) const {
+void MembraneModel::compute(std::span<const Vec3> positions_um,
+                            std::span<const Vec3> velocities_um_per_s,
+                            MembraneWorkspace& workspace, MembraneForces& forces,
+                            ForceDetail detail) const {
   if (positions_um.size() != vertex_count()) {
     throw std::invalid_argument("membrane forces: " + std::to_string(positions_um.size()) +
                                 " positions for a mesh of " + std::to_string(vertex_count()) +
@@ -88,7 +119,43 @@ void MembraneModel::compute(std::span<const Vec3> positions_um, MembraneWorkspac
   if (forces.total_pN.size() != vertex_count() || forces.terms.size() != term_names_.size()) {
     throw std::invalid_argument("membrane forces: the force arrays were not made by this model");
   }
+  if (!velocities_um_per_s.empty() && velocities_um_per_s.size() != vertex_count()) {
+    throw std::invalid_argument("membrane forces: " + std::to_string(velocities_um_per_s.size()) +
+                                " velocities for a mesh of " + std::to_string(vertex_count()) +
+                                " vertices");
+  }
   kernel_->compute(*this, positions_um, workspace, forces, detail);
+  if (has_dissipative_terms()) add_dissipative_forces(positions_um, velocities_um_per_s, workspace, forces, detail);
+}
+
+void MembraneModel::add_dissipative_forces(std::span<const Vec3> positions_um,
+                                           std::span<const Vec3> velocities_um_per_s,
+                                           MembraneWorkspace& workspace, MembraneForces& forces,
+                                           ForceDetail detail) const {
+  if (workspace.dissipative.size() != dissipative_terms_.size()) {
+    throw std::invalid_argument("membrane forces: the workspace was not made by this model");
+  }
+  measure_cell_geometry(positions_um, triangles_, topology_, workspace.dissipative_geometry);
+  TermContext context{positions_um, triangles_, topology_, *stencils_, reference_,
+                      workspace.dissipative_geometry};
+  context.velocities_um_per_s = velocities_um_per_s;
+  for (std::size_t i = 0; i < dissipative_terms_.size(); ++i) {
+    auto& out = workspace.dissipative[i];
+    dissipative_terms_[i]->evaluate(context, workspace.dissipative_scratch, out);
+    for (std::size_t v = 0; v < vertex_count(); ++v) {
+      if (!out.forces_pN[v].allFinite()) {
+        throw RuntimeFailure("membrane term '" + out.name + "': vertex " + std::to_string(v) +
+                             ": the force is not finite");
+      }
+      forces.total_pN[v] += out.forces_pN[v];
+    }
+    auto& term = forces.terms[kernel_term_count_ + i];
+    term.max_abs_deviation = out.max_abs_deviation;
+    if (detail == ForceDetail::per_term) {
+      term.forces_pN = out.forces_pN;
+      term.energy_pN_um = out.energy_pN_um;
+    }
+  }
 }
 
 }  // namespace rbcsim::membrane

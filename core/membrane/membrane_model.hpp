@@ -16,6 +16,8 @@
 #include <vector>
 
 #include "common/vec3.hpp"
+#include "membrane/edge_friction.hpp"
+#include "membrane/force_term.hpp"
 #include "membrane/membrane_forces.hpp"
 #include "membrane/membrane_kernel.hpp"
 #include "membrane/parameters.hpp"
@@ -44,9 +46,17 @@ class MembraneModel {
   // Forces at positions_um (one per vertex); `detail` says whether the per-term arrays and
   // energies are wanted too (membrane_forces.hpp). Throws RuntimeFailure naming the term and
   // element when a deviation reaches its limit tau, or naming the vertex when a force is not
-  // finite. `workspace` must come from this model's make_workspace().
+  // finite. `workspace` must come from this model's make_workspace(). The elastic terms come from
+  // the kernel, summed and capped; the dissipative ones (membrane viscosity) are evaluated at
+  // `velocities_um_per_s` (one per vertex, or empty: at rest) and added after the cap.
+  void compute(std::span<const Vec3> positions_um, std::span<const Vec3> velocities_um_per_s,
+               MembraneWorkspace& workspace, MembraneForces& forces,
+               ForceDetail detail = ForceDetail::per_term) const;
+  // At rest: the elastic forces only (a dissipative term contributes none).
   void compute(std::span<const Vec3> positions_um, MembraneWorkspace& workspace,
-               MembraneForces& forces, ForceDetail detail = ForceDetail::per_term) const;
+               MembraneForces& forces, ForceDetail detail = ForceDetail::per_term) const {
+    compute(positions_um, {}, workspace, forces, detail);
+  }
 
   std::size_t vertex_count() const { return topology_.vertex_count(); }
   std::span<const mesh::Triangle> triangles() const { return triangles_; }
@@ -55,14 +65,34 @@ class MembraneModel {
   const MembraneParameters& parameters() const { return parameters_; }
   // The enabled terms in registry order: the order of MembraneForces::terms.
   std::span<const std::string_view> enabled_term_names() const { return term_names_; }
+  // The elastic ones, which the kernel computes: the first entries of enabled_term_names().
+  std::span<const std::string_view> kernel_term_names() const {
+    return std::span(term_names_).first(kernel_term_count_);
+  }
+  // Whether a dissipative term (membrane viscosity) is enabled: the forces then depend on the
+  // vertex velocities.
+  bool has_dissipative_terms() const { return kernel_term_count_ < term_names_.size(); }
+  // The friction of the enabled viscosity term (zero without it), for the implicit update of a
+  // coupling (edge_friction.hpp).
+  const EdgeFrictionParameters& edge_friction() const { return friction_; }
 
  private:
+  void add_dissipative_forces(std::span<const Vec3> positions_um,
+                              std::span<const Vec3> velocities_um_per_s,
+                              MembraneWorkspace& workspace, MembraneForces& forces,
+                              ForceDetail detail) const;
+
   std::vector<mesh::Triangle> triangles_;
   mesh::MeshTopology topology_;
   ReferenceState reference_;
   MembraneParameters parameters_;
   std::vector<std::string_view> term_names_;
+  std::size_t kernel_term_count_ = 0;
+  EdgeFrictionParameters friction_;
   std::unique_ptr<MembraneKernel> kernel_;
+  // The dissipative terms, evaluated by compute() itself (built only when enabled).
+  std::vector<std::unique_ptr<ForceTerm>> dissipative_terms_;
+  std::unique_ptr<MeshStencils> stencils_;
 };
 
 }  // namespace rbcsim::membrane

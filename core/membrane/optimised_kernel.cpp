@@ -111,7 +111,7 @@ FusedConstants make_constants(const MembraneModel& model, const FusedDistributio
                               reference.absolute_curvature_sum_um},
       .total_area_modulus_pN_per_um = p.total_area_modulus_uN_per_m,
   };
-  for (auto name : model.enabled_term_names()) constants.enabled[term_of(name)] = true;
+  for (auto name : model.kernel_term_names()) constants.enabled[term_of(name)] = true;
   constants.angle_terms = constants.enabled[kBend] || constants.enabled[kAreaDifference] ||
                           constants.enabled[kTotalCurvature];
   return constants;
@@ -182,9 +182,9 @@ class OptimisedKernel final : public MembraneKernel {
         incidence_(make_incidence(model)) {
     // The term factories validate the parameters and the reference (e.g. DeltaA0 near zero):
     // this kernel accepts exactly what the reference kernel accepts.
-    make_force_terms(model.enabled_term_names(), model.parameters(), model.reference());
+    make_force_terms(model.kernel_term_names(), model.parameters(), model.reference());
     for (const auto& entry : hinge_distribution_table()) find_fused_distribution(entry.name);
-    for (auto name : model.enabled_term_names()) enabled_terms_.push_back(term_of(name));
+    for (auto name : model.kernel_term_names()) enabled_terms_.push_back(term_of(name));
   }
 
   MembraneWorkspace make_workspace(const MembraneModel&) const override {

@@ -12,6 +12,8 @@ namespace rbcsim::membrane {
 
 // Every force term of the registry (force_term_table.cpp), in evaluation order.
 std::vector<std::string> all_force_term_names();
+// Those with an energy (the kernels' terms), without the dissipative ones (viscosity).
+std::vector<std::string> elastic_force_term_names();
 // The paper's six (Eqs. 6-11), the default: a term beyond them (total_area) is switched on by
 // naming it.
 std::vector<std::string> paper_force_term_names();
@@ -48,6 +50,14 @@ struct MembraneParameters {
   // Default 5 mN/m, a constraint and not the bilayer's 0.288 N/m, which the explicit coupling
   // cannot integrate at the paper's lattice (docs/physics.md, "the whole-membrane area").
   double total_area_modulus_uN_per_m = 5000.0;
+
+  // 2D membrane viscosity eta_m of the viscosity term (edge_friction.hpp), Pa s um = pN s/um.
+  // Default 0.5: Hochmuth & Hampel 1979's surface viscosity of the red cell, 5e-7 N s/m
+  // (micropipette recovery; dpdprops' default 0.42 agrees within 20 %). Off unless `viscosity` is
+  // in `forces`; 0 leaves every result as without the term.
+  double viscosity_Pa_s_um = 0.5;
+  // How eta_m is shared between central and tangential friction (viscosity_splits()).
+  std::string viscosity_split = "central";
 
   // Enabled terms by name (any subset of all_force_term_names()).
   std::vector<std::string> forces = paper_force_term_names();

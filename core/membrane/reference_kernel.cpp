@@ -18,16 +18,17 @@ class ReferenceKernel final : public MembraneKernel {
   explicit ReferenceKernel(const MembraneModel& model)
       : stencils_(MeshStencils::build(model.triangles(), model.topology())),
         terms_(
-            make_force_terms(model.enabled_term_names(), model.parameters(), model.reference())) {}
+            make_force_terms(model.kernel_term_names(), model.parameters(), model.reference())) {}
 
   MembraneWorkspace make_workspace(const MembraneModel& model) const override {
     const auto edges = model.topology().edge_count();
     const auto triangles = model.topology().triangle_count();
     const auto elements = std::max(edges, triangles);
-    return {CellGeometry(triangles, edges),
-            TermScratch{std::vector<double>(elements), std::vector<double>(elements),
-                        std::vector<Vec3>(4 * edges), 0.0},
-            OptimisedScratch{}};
+    MembraneWorkspace workspace;
+    workspace.geometry = CellGeometry(triangles, edges);
+    workspace.scratch = TermScratch{std::vector<double>(elements), std::vector<double>(elements),
+                                    std::vector<Vec3>(4 * edges), 0.0};
+    return workspace;
   }
 
   void compute(const MembraneModel& model, std::span<const Vec3> positions_um,
@@ -47,19 +48,20 @@ class ReferenceKernel final : public MembraneKernel {
     forces.cell =
         cell_deviations(model.reference(), geometry.volume_um3, geometry.area_um2,
                         geometry.signed_curvature_sum_um, geometry.absolute_curvature_sum_um);
-    cap_and_sum(model.parameters().vertex_force_cap_pN, forces);
+    cap_and_sum(model.parameters().vertex_force_cap_pN, terms_.size(), forces);
     if (detail == ForceDetail::totals) drop_term_detail(forces);
   }
 
  private:
-  static void cap_and_sum(double cap_pN, MembraneForces& forces) {
+  // The sum of the kernel's terms (the first `term_count` of forces.terms), capped.
+  static void cap_and_sum(double cap_pN, std::size_t term_count, MembraneForces& forces) {
     const auto count = static_cast<std::ptrdiff_t>(forces.total_pN.size());
     std::size_t capped = 0;
     std::ptrdiff_t first_non_finite = count;
 #pragma omp parallel for schedule(static) reduction(+ : capped) reduction(min : first_non_finite)
     for (std::ptrdiff_t v = 0; v < count; ++v) {
       Vec3 total = Vec3::Zero();
-      for (const auto& term : forces.terms) total += term.forces_pN[v];
+      for (std::size_t i = 0; i < term_count; ++i) total += forces.terms[i].forces_pN[v];
       bool finite = true;
       if (clamp_to_force_cap(total, cap_pN, finite)) ++capped;
       if (!finite) first_non_finite = std::min(first_non_finite, v);

@@ -135,7 +135,11 @@ config::Config compressed_capillary_config(const config::Config& config, const C
   auto compressed = config
                         .with("physics.plasma_kinematic_viscosity_m2_per_s",
                               compression.simulated_kinematic_viscosity_m2_per_s)
-                        .with("capillary.inlet_velocity_m_per_s", velocity * s);
+                        .with("capillary.inlet_velocity_m_per_s", velocity * s)
+                        // The membrane's viscosity keeps its ratio to the plasma's (the
+                        // Boussinesq number eta_m / (eta R)), as the cytoplasm's does.
+                        .with("membrane.viscosity_Pa_s_um",
+                              config.number("membrane.viscosity_Pa_s_um") / s);
   // A zero max_time_s is resolved from the (compressed) velocity; zero intervals mean "none".
   for (const char* time : {"capillary.max_time_s", "capillary.sample_interval_s",
                            "output.membrane_interval_s", "output.fluid_interval_s"}) {

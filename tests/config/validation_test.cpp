@@ -77,12 +77,12 @@ TEST(Validation, ChoicesAndLists) {
   EXPECT_EQ(problem_of({{"membrane", {{"forces", json::array()}}}}), "");
   EXPECT_EQ(problem_of({{"membrane", {{"forces", {"link", "bnd"}}}}}),
             "run.json: membrane.forces: [1]: \"bnd\" is not one of link, bend, area, volume, "
-            "area_difference, total_curvature, total_area; did you mean `bend`?");
+            "area_difference, total_curvature, total_area, viscosity; did you mean `bend`?");
   EXPECT_EQ(problem_of({{"membrane", {{"forces", {"link", "link"}}}}}),
             "run.json: membrane.forces: lists \"link\" more than once");
   EXPECT_EQ(problem_of({{"membrane", {{"forces", "link"}}}}),
             "run.json: membrane.forces: expected array of strings, each one of link, bend, area, "
-            "volume, area_difference, total_curvature, total_area, got string \"link\"");
+            "volume, area_difference, total_curvature, total_area, viscosity, got string \"link\"");
 }
 
 TEST(Validation, DottedKeysMustBeNested) {

@@ -139,14 +139,15 @@ struct CoupledState {
 // images), on more than 4096 nodes so that the lattice really splits its work between threads.
 // 41 steps: the optimised fluid kernel ends in its swapped (AA) layout.
 template <typename MakeFluid>
-CoupledState sheared_capsule_after_steps(int threads, MakeFluid make_fluid) {
+CoupledState sheared_capsule_after_steps(int threads, MakeFluid make_fluid,
+                                         const membrane::MembraneParameters& membrane) {
   const ThreadCountScope thread_count(threads);
   CouplingParameters parameters;
   parameters.point_advance = "ab2";
   CoupledSimulation simulation(make_fluid(), plasma_units(), parameters);
   const Vec3 centre_um(4.7, 4.3, 3.9);
   const auto sphere = sphere_mesh(2, 2.0, centre_um);
-  simulation.add_cell(membrane::MembraneModel(sphere, membrane::MembraneParameters{}),
+  simulation.add_cell(membrane::MembraneModel(sphere, membrane),
                       stretched(sphere, centre_um, Vec3(1.1, 0.95, 1.0)));
   for (int step = 0; step < 41; ++step) simulation.step();
   const auto positions = simulation.cell(0).positions_lu();
@@ -158,9 +159,10 @@ CoupledState sheared_capsule_after_steps(int threads, MakeFluid make_fluid) {
 // The whole coupled step (membrane forces, spreading, LBM sweep, interpolation, point advance)
 // with 1 and 2 OpenMP threads, bit for bit.
 template <typename MakeFluid>
-void expect_thread_independent(MakeFluid make_fluid) {
-  const auto one = sheared_capsule_after_steps(1, make_fluid);
-  const auto two = sheared_capsule_after_steps(2, make_fluid);
+void expect_thread_independent(MakeFluid make_fluid,
+                               const membrane::MembraneParameters& membrane = {}) {
+  const auto one = sheared_capsule_after_steps(1, make_fluid, membrane);
+  const auto two = sheared_capsule_after_steps(2, make_fluid, membrane);
   ASSERT_EQ(one.positions_lu.size(), two.positions_lu.size());
   for (std::size_t v = 0; v < one.positions_lu.size(); ++v) {
     for (int axis = 0; axis < 3; ++axis) {
@@ -181,6 +183,13 @@ TEST(CoupledStep, ResultsAreBitIdenticalForOneAndTwoThreadsBetweenWalls) {
 
 TEST(CoupledStep, ResultsAreBitIdenticalForOneAndTwoThreadsWithLeesEdwards) {
   expect_thread_independent([] { return lees_edwards_fluid(20, 18, 16, 0.02); });
+}
+
+// With membrane viscosity: the implicit friction step (conjugate gradients) too.
+TEST(CoupledStep, ResultsAreBitIdenticalForOneAndTwoThreadsWithMembraneViscosity) {
+  membrane::MembraneParameters membrane;
+  membrane.forces.push_back("viscosity");
+  expect_thread_independent([] { return couette_fluid(20, 18, 16, 0.01); }, membrane);
 }
 
 }  // namespace

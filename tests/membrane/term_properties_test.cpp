@@ -222,7 +222,7 @@ std::string term_case_name(const ::testing::TestParamInfo<TermCase>& info) {
 // Every registered term, on every shape, in the given distributions.
 auto cases(const std::vector<std::string>& distributions) {
   return ::testing::Combine(::testing::Range<std::size_t>(0, test_shapes().size()),
-                            ::testing::ValuesIn(rbcsim::membrane::all_force_term_names()),
+                            ::testing::ValuesIn(rbcsim::membrane::elastic_force_term_names()),
                             ::testing::ValuesIn(distributions));
 }
 

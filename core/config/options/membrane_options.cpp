@@ -1,5 +1,6 @@
 #include "common/registry.hpp"
 #include "config/options/option_areas.hpp"
+#include "membrane/edge_friction.hpp"
 #include "membrane/hinge.hpp"
 #include "membrane/membrane_kernel.hpp"
 #include "membrane/parameters.hpp"
@@ -76,6 +77,18 @@ void add_limits(OptionTable& table) {
                   "Modulus K of the whole-membrane area term, E = K (A - A0)^2 / (2 A0); acts "
                   "only when membrane.forces names total_area (not one of the paper's six).")
       .at_least(0.0);
+  // Not in the paper either: membrane viscosity as edge friction (Fedosov et al. 2010). The
+  // default is Hochmuth & Hampel 1979's measured surface viscosity.
+  table
+      .add_number("membrane.viscosity_Pa_s_um", "Pa s um", kMembraneDefaults.viscosity_Pa_s_um,
+                  "2D membrane viscosity eta_m of the viscosity term (1 Pa s um = 1e-6 N s/m; "
+                  "Hochmuth & Hampel 1979: 0.5); acts only when membrane.forces names viscosity, "
+                  "and 0 is no viscosity.")
+      .at_least(0.0);
+  table.add_choice("membrane.viscosity_split", membrane::viscosity_splits().names(),
+                   kMembraneDefaults.viscosity_split,
+                   "How eta_m = sqrt3 gamma_T + sqrt3 gamma_C / 4 is shared by the edge friction: " +
+                       membrane::viscosity_splits().described_names() + ".");
 }
 
 void add_scales_and_variants(OptionTable& table) {
@@ -91,7 +104,7 @@ void add_scales_and_variants(OptionTable& table) {
   table.add_choice_list("membrane.forces", membrane::all_force_term_names(),
                         kMembraneDefaults.forces,
                         "Force terms switched on: the paper's six by default; total_area adds the "
-                        "whole-membrane area term.");
+                        "whole-membrane area term, viscosity the membrane viscosity.");
   table.add_choice("membrane.kernel", entry_names(membrane::membrane_kernel_table()),
                    kMembraneDefaults.kernel,
                    "Force kernel: the fused optimised one, or the plain reference it is tested "
