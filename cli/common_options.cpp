@@ -11,9 +11,10 @@
 namespace rbcsim::cli {
 namespace {
 
-std::string morphology_help() {
-  const auto& option = *config::option_table().find("morphology");
-  std::string help = "Cell morphology and its Table 2 parameters:";
+// Help of an option that picks an overlay of share/ (--morphology, --preset): its choices from
+// the option table.
+std::string overlay_help(std::string_view path, std::string help) {
+  const auto& option = *config::option_table().find(path);
   for (const auto& choice : option.choices) help.append(" ").append(choice);
   return help + " (default: " + option.default_value.get<std::string>() +
          "; overrides config files and --set)";
@@ -79,7 +80,14 @@ void add_config_options(CLI::App* command, config::ConfigRequest& request) {
       ->type_name("KEY.PATH=VALUE")
       ->allow_extra_args(false)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  command->add_option("--morphology", request.morphology, morphology_help())->type_name("NAME");
+  command
+      ->add_option("--morphology", request.morphology,
+                   overlay_help("morphology", "Cell morphology and its Table 2 parameters:"))
+      ->type_name("NAME");
+  command
+      ->add_option("--preset", request.preset,
+                   overlay_help("preset", "Whole parameter set, under the morphology's and yours:"))
+      ->type_name("NAME");
 }
 
 void add_common_options(CLI::App* command, CommonOptions& options) {

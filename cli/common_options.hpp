@@ -1,7 +1,7 @@
 // The options every subcommand shares (docs/commands/README.md): --config, --set, --morphology,
-// --output, --threads, --json, --quiet, --verbose. A subcommand declares a CommonOptions that
-// outlives the parse (e.g. in a shared_ptr captured by its callback), calls add_common_options, and
-// in its callback calls resolve_config.
+// --preset, --output, --threads, --json, --quiet, --verbose. A subcommand declares a
+// CommonOptions that outlives the parse (e.g. in a shared_ptr captured by its callback), calls
+// add_common_options, and in its callback calls resolve_config.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -16,7 +16,7 @@
 namespace rbcsim::cli {
 
 struct CommonOptions {
-  config::ConfigRequest config;  // --config (repeatable), --set (repeatable), --morphology
+  config::ConfigRequest config;  // --config, --set (repeatable), --morphology, --preset
   std::filesystem::path output_directory;  // --output; empty: the subcommand's default
   int threads = 0;                         // --threads; 0: OpenMP's default (all cores)
   bool json = false;                       // --json: machine-readable result on stdout

@@ -15,6 +15,7 @@ namespace {
 using nlohmann::json;
 
 constexpr std::string_view kMorphologyPath = "morphology";
+constexpr std::string_view kPresetPath = "preset";
 
 struct ConfigLayer {
   std::string source;
@@ -49,16 +50,18 @@ std::vector<ConfigLayer> user_layers(const ConfigRequest& request) {
   return layers;
 }
 
-std::string chosen_morphology(const ConfigRequest& request,
-                              const std::vector<ConfigLayer>& layers) {
-  const auto& option = *option_table().find(kMorphologyPath);
-  if (request.morphology) {
-    if (const auto problem = value_problem(option, *request.morphology)) {
-      throw InputError("--morphology", *problem);
+// The value of a top-level choice that selects an overlay (morphology, preset): the command
+// option if given, else the last layer that sets it, else its default.
+std::string chosen(std::string_view path, const std::optional<std::string>& from_option,
+                   std::string_view option_name, const std::vector<ConfigLayer>& layers) {
+  const auto& option = *option_table().find(path);
+  if (from_option) {
+    if (const auto problem = value_problem(option, *from_option)) {
+      throw InputError(std::string(option_name), *problem);
     }
-    return *request.morphology;
+    return *from_option;
   }
-  const std::string key(kMorphologyPath);
+  const std::string key(path);
   const auto last = std::find_if(layers.rbegin(), layers.rend(), [&key](const ConfigLayer& layer) {
     return layer.tree.contains(key);
   });
@@ -66,8 +69,7 @@ std::string chosen_morphology(const ConfigRequest& request,
                                : option.default_value.get<std::string>();
 }
 
-json morphology_overlay(const std::string& morphology) {
-  const auto relative_path = "config/" + morphology + ".json";
+json share_overlay(const std::string& relative_path) {
   const auto text = find_embedded_share_file(relative_path);
   if (!text) throw std::logic_error("share/" + relative_path + " is not embedded in the binary");
   return without_annotations(parse_config_text(*text, "share/" + relative_path + " (embedded)"));
@@ -77,11 +79,14 @@ json morphology_overlay(const std::string& morphology) {
 
 Config resolve_config(const ConfigRequest& request) {
   const auto layers = user_layers(request);
-  const auto morphology = chosen_morphology(request, layers);
+  const auto morphology = chosen(kMorphologyPath, request.morphology, "--morphology", layers);
+  const auto preset = chosen(kPresetPath, request.preset, "--preset", layers);
   auto tree = option_table().defaults();
-  merge_into(tree, morphology_overlay(morphology));
+  merge_into(tree, share_overlay("config/presets/" + preset + ".json"));
+  merge_into(tree, share_overlay("config/" + morphology + ".json"));
   for (const auto& layer : layers) merge_into(tree, without_annotations(layer.tree));
   tree[std::string(kMorphologyPath)] = morphology;
+  tree[std::string(kPresetPath)] = preset;
   return Config(std::move(tree));
 }
 

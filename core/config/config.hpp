@@ -29,6 +29,7 @@ struct OptionAssignment {
 struct ConfigRequest {
   // Default member initialisers let callers name only what they set: {.morphology = "..."}.
   std::optional<std::string> morphology = {};             // --morphology: wins over files and --set
+  std::optional<std::string> preset = {};                 // --preset: wins over files and --set
   std::vector<std::filesystem::path> files = {};          // --config, applied in order
   std::vector<std::string> assignments = {};              // --set key.path=value, after the files
   std::vector<OptionAssignment> option_assignments = {};  // a command's options, after --set

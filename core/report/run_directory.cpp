@@ -97,6 +97,8 @@ RunDirectory read_run_directory(const std::filesystem::path& directory) {
   result.at("headline").object();
 
   run.forces = string_list(run.config_field().at("membrane").at("forces"));
+  const auto preset = run.config_field().find("preset");
+  run.preset = preset ? preset->string() : "-";
   run.terms = describe_terms(run.forces);
   // Older run directories have no run.notices: none told.
   if (const auto run_object = run.config_field().find("run")) {

@@ -17,6 +17,7 @@ struct RunDirectory {
   std::filesystem::path directory;
   std::string command;     // result.json "command": calibrate, stretch, shear, capillary, ...
   std::string morphology;  // result.json "morphology"
+  std::string preset;      // config.json "preset"; "-" for runs older than presets
   std::string status;      // result.json "status": "ok", "failed" or "interrupted"
   std::vector<std::string> forces;   // config.json membrane.forces, the enabled terms
   std::string terms;                 // describe_terms(forces)

@@ -30,6 +30,7 @@ std::vector<std::string> run_row(const RunDirectory& run) {
   return {run.directory.generic_string(),
           run.command,
           run.morphology,
+          run.preset,
           run.terms,
           run.status,
           format_cell(result.at("wall_time_s")),
@@ -42,11 +43,11 @@ std::vector<std::string> run_row(const RunDirectory& run) {
 Section build_runs_section(const RunList& runs) {
   Section section{"runs", "Runs", {}, nlohmann::json::array()};
   section.blocks.emplace_back(Paragraph{
-      std::to_string(runs.size()) + " run directories. Membrane terms are those enabled in " +
-      "config.json (membrane.forces); wall time, version and threads come from result.json; "
+      std::to_string(runs.size()) + " run directories. The preset and the membrane terms are "
+      "config.json's (preset, membrane.forces); wall time, version and threads come from result.json; "
       "the full configuration of each run (with its start time and mesh) is folded below."});
   Table table{"Runs",
-              {"run directory", "command", "morphology", "membrane terms", "status",
+              {"run directory", "command", "morphology", "preset", "membrane terms", "status",
                "wall time (s)", "version", "threads"},
               {}};
   for (const auto* run : runs) table.rows.push_back(run_row(*run));

@@ -45,6 +45,7 @@ std::string morphology_and_terms(const RunDirectory& run) {
 nlohmann::json run_identity(const RunDirectory& run) {
   return {{"directory", run.directory.generic_string()},
           {"morphology", run.morphology},
+          {"preset", run.preset},
           {"terms", run.terms},
           {"forces", run.forces}};
 }

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "config/config_sources.hpp"
@@ -92,6 +94,39 @@ TEST(ResolveConfig, MorphologyComesFromTheLastSourceThatSetsIt) {
                                            .assignments = {"morphology=stomatocyte-II"}});
   EXPECT_EQ(from_option.string("morphology"), "discocyte");
   EXPECT_EQ(from_option.number("membrane.k_bend_kBT"), 50.0);
+}
+
+// The presets (share/config/presets): `paper` is the paper's membrane as printed, the default;
+// `physiological` adds the bilayer's area incompressibility and membrane viscosity at their
+// literature values. Every other layer (morphology, files, --set) goes over a preset.
+TEST(ResolveConfig, PresetsAreWholeParameterSetsUnderEveryOtherLayer) {
+  const auto paper = resolve_config();
+  EXPECT_EQ(paper.string("preset"), "paper");
+  const std::vector<std::string> six = {"link", "bend", "area", "volume", "area_difference",
+                                        "total_curvature"};
+  EXPECT_EQ(paper.string_list("membrane.forces"), six);
+  const auto physiological = resolve_config({.morphology = "echinocyte-III",
+                                             .preset = "physiological"});
+  EXPECT_EQ(physiological.string("preset"), "physiological");
+  auto with_both = six;
+  with_both.insert(with_both.end(), {"total_area", "viscosity"});
+  EXPECT_EQ(physiological.string_list("membrane.forces"), with_both);
+  EXPECT_EQ(physiological.number("membrane.viscosity_Pa_s_um"), 0.5);  // Hochmuth & Hampel 1979
+  EXPECT_EQ(physiological.number("membrane.k_bend_kBT"), 70.0);       // the morphology's still
+  const ScratchDirectory directory;
+  const auto file = directory.write("p.json", R"({"preset": "physiological"})");
+  const auto chosen_in_a_file =
+      resolve_config({.files = {file}, .assignments = {"membrane.viscosity_Pa_s_um=0.1"}});
+  EXPECT_EQ(chosen_in_a_file.string("preset"), "physiological");
+  EXPECT_EQ(chosen_in_a_file.string_list("membrane.forces"), with_both);
+  EXPECT_EQ(chosen_in_a_file.number("membrane.viscosity_Pa_s_um"), 0.1);  // --set over it
+  try {
+    resolve_config({.preset = "healthy"});
+    FAIL() << "accepted an unknown preset";
+  } catch (const InputError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "--preset: \"healthy\" is not one of paper, physiological");
+  }
 }
 
 TEST(ResolveConfig, BadInputNamesItsSource) {

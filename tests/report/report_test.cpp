@@ -220,7 +220,7 @@ TEST_F(ReportOfStandardRuns, RunsTableListsEveryRunWithItsMetadata) {
     escaped += c;
   }
   EXPECT_NE(markdown.find("| " + escaped +
-                          " | stretch | discocyte | without area\\_difference and "
+                          " | stretch | discocyte | paper | without area\\_difference and "
                           "total\\_curvature | ok | 2.5 | " RBCSIM_VERSION " | 2 |"),
             std::string::npos)
       << markdown;

@@ -19,11 +19,27 @@ std::vector<std::string> morphologies() {
   return names;
 }
 
+// A preset is a whole parameter set, share/config/presets/<name>.json, in this order.
+std::vector<std::string> presets() {
+  std::vector<std::string> names;
+  for (const char* name : {"paper", "physiological"}) {
+    if (find_embedded_share_file(std::string("config/presets/") + name + ".json")) {
+      names.emplace_back(name);
+    }
+  }
+  return names;
+}
+
 }  // namespace
 
 void add_morphology_options(OptionTable& table) {
   table.add_choice("morphology", morphologies(), "discocyte",
                    "Cell morphology: selects the built-in shape and its Table 2 stiffnesses.");
+  table.add_choice("preset", presets(), "paper",
+                   "Whole parameter set under the morphology's and the user's settings: paper (the "
+                   "paper's six forces as printed, plasma inside the cell, no membrane "
+                   "viscosity) or physiological (plus the bilayer's area incompressibility, "
+                   "membrane viscosity and the cytoplasm's viscosity; docs/physics.md).");
 }
 
 }  // namespace rbcsim::config
