@@ -81,8 +81,8 @@ constexpr std::size_t kThreadedBoxNodes = 4096;
 // Node range [first, last] of box axis `axis` (relative to the box) covering [low, high].
 std::array<int, 2> box_range(double low, double high, const NodeBox& box, int axis) {
   const int first = std::max(static_cast<int>(std::ceil(low)) - box.first[axis], 0);
-  const int last = std::min(static_cast<int>(std::floor(high)) - box.first[axis],
-                            box.count[axis] - 1);
+  const int last =
+      std::min(static_cast<int>(std::floor(high)) - box.first[axis], box.count[axis] - 1);
   return {first, last};
 }
 
@@ -112,8 +112,7 @@ void SurfaceIndicator::compute(std::span<const Vec3> vertices,
   }
   for (int axis = 0; axis < 3; ++axis) {
     box_.first[axis] = static_cast<int>(std::ceil(low[axis] - half_width));
-    box_.count[axis] =
-        static_cast<int>(std::floor(high[axis] + half_width)) - box_.first[axis] + 1;
+    box_.count[axis] = static_cast<int>(std::floor(high[axis] + half_width)) - box_.first[axis] + 1;
   }
   snapped_xy_.resize(vertices.size());
   vertex_z_.resize(vertices.size());
@@ -165,8 +164,8 @@ void SurfaceIndicator::collect_crossings(std::span<const SurfaceTriangle> triang
     const auto range_y = column_range(1);
     for (int y = range_y[0]; y <= range_y[1]; ++y) {
       for (int x = range_x[0]; x <= range_x[1]; ++x) {
-        const Snapped p = {static_cast<std::int64_t>(x) << kSnapBits,
-                           static_cast<std::int64_t>(y) << kSnapBits};
+        const Snapped p = {static_cast<std::int64_t>(x) << kSnapBits, static_cast<std::int64_t>(y)
+                                                                          << kSnapBits};
         Wide weight_a = 0;
         Wide weight_b = 0;
         Wide weight_c = 0;
@@ -230,10 +229,10 @@ void SurfaceIndicator::fill_distances(std::span<const Vec3> vertices,
   const int layers = box_.count[2];
   layer_begin_.assign(static_cast<std::size_t>(layers) + 1, 0);
   const auto z_range = [&](const SurfaceTriangle& triangle) {
-    const double low = std::min({vertex_z_[triangle[0]], vertex_z_[triangle[1]],
-                                 vertex_z_[triangle[2]]});
-    const double high = std::max({vertex_z_[triangle[0]], vertex_z_[triangle[1]],
-                                  vertex_z_[triangle[2]]});
+    const double low =
+        std::min({vertex_z_[triangle[0]], vertex_z_[triangle[1]], vertex_z_[triangle[2]]});
+    const double high =
+        std::max({vertex_z_[triangle[0]], vertex_z_[triangle[1]], vertex_z_[triangle[2]]});
     return box_range(low - eps, high + eps, box_, 2);
   };
   for (const SurfaceTriangle& triangle : triangles) {

@@ -94,7 +94,6 @@ class SurfaceIndicator {
 
 // The node of `grid` that box node (i, j, k) stands for (wrapped along periodic axes), or no node
 // (false) when it lies beyond a non-periodic face.
-bool grid_node_of(const GridView& grid, const NodeBox& box, int i, int j, int k,
-                  std::size_t& node);
+bool grid_node_of(const GridView& grid, const NodeBox& box, int i, int j, int k, std::size_t& node);
 
 }  // namespace rbcsim::ibm

@@ -111,10 +111,10 @@ struct Moments {
 // Collides `length` consecutive nodes starting at grid index `first`. Node k reads f_i from
 // p[i][k] and writes f*_i to p[opp(i)][k]: with p[i] at slot i of the node itself this is the AA
 // local step, with p[i] at slot opp(i) of the node x - c_i the streaming step. With
-// kPerNodeRates each node relaxes at the constants of its viscosity class, else all at `k`. Every slot is read
-// and written by one node only, so iterations are independent: `ivdep` says so to the vectoriser
-// (GCC 12 does not vectorise this loop under `omp simd`, which privatises the array f into a simd
-// array it cannot load from).
+// kPerNodeRates each node relaxes at the constants of its viscosity class, else all at `k`. Every
+// slot is read and written by one node only, so iterations are independent: `ivdep` says so to the
+// vectoriser (GCC 12 does not vectorise this loop under `omp simd`, which privatises the array f
+// into a simd array it cannot load from).
 template <bool kForceField, bool kPerNodeRates>
 RBCSIM_VECTOR_CLONES void collide_run(double* const (&p)[kDirections], std::size_t first,
                                       std::ptrdiff_t length, FluidArrays& arrays,
@@ -249,8 +249,7 @@ void collide_linked_node(const LinkedNode& linked, std::size_t stride, FluidArra
       force[axis] += arrays.force_density[axis][node];
     }
   }
-  const TrtConstants& rates =
-      kPerNodeRates ? node_rates.constants[node_rates.classes[node]] : k;
+  const TrtConstants& rates = kPerNodeRates ? node_rates.constants[node_rates.classes[node]] : k;
   const Moments moments = collide_written_out(f, force[0], force[1], force[2], rates);
   arrays.density[node] = moments.density;
   arrays.velocity[0][node] = moments.ux;

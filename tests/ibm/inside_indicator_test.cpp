@@ -67,8 +67,7 @@ TEST(SmoothedHeaviside, IsOneHalfOnTheSurfaceAndSymmetric) {
     EXPECT_EQ(smoothed_heaviside(-eps, eps), 0.0);
     EXPECT_EQ(smoothed_heaviside(3.0 * eps, eps), 1.0);
     for (const double d : {0.1, 0.37, 0.8, 0.99}) {
-      EXPECT_NEAR(smoothed_heaviside(d * eps, eps) + smoothed_heaviside(-d * eps, eps), 1.0,
-                  1e-15);
+      EXPECT_NEAR(smoothed_heaviside(d * eps, eps) + smoothed_heaviside(-d * eps, eps), 1.0, 1e-15);
     }
     // Continuous at +-eps: the sine term vanishes there.
     EXPECT_NEAR(smoothed_heaviside(eps * (1.0 - 1e-9), eps), 1.0, 1e-8);
@@ -100,10 +99,11 @@ TEST(InsideIndicator, SumsToTheEnclosedVolumePlusTheCurvatureBias) {
     const double smooth = indicator_sum(indicator);
     double sharp = 0.0;
     for (const auto winding : indicator.winding_numbers()) sharp += winding;
-    std::printf("radii (%.0f %.0f %.0f), eps %.1f: sum H / V - 1 = %+.4f (bias %+.4f), "
-                "inside nodes / V - 1 = %+.4f\n",
-                c.radii.x(), c.radii.y(), c.radii.z(), c.eps, smooth / volume - 1.0,
-                bias / volume, sharp / volume - 1.0);
+    std::printf(
+        "radii (%.0f %.0f %.0f), eps %.1f: sum H / V - 1 = %+.4f (bias %+.4f), "
+        "inside nodes / V - 1 = %+.4f\n",
+        c.radii.x(), c.radii.y(), c.radii.z(), c.eps, smooth / volume - 1.0, bias / volume,
+        sharp / volume - 1.0);
     EXPECT_NEAR(smooth / volume, 1.0, c.tolerance);
     EXPECT_NEAR(smooth / (volume + bias), 1.0, 0.001);
     EXPECT_NEAR(sharp / volume, 1.0, 0.005);
@@ -120,8 +120,8 @@ TEST(InsideIndicator, SumsToTheEnclosedVolumePlusTheCurvatureBias) {
 TEST(InsideIndicator, ColumnsThroughVerticesAndEdgesCountOnce) {
   TriangleMesh octahedron;
   const Vec3 c(10.0, 10.0, 10.0);
-  octahedron.positions_um = {c + Vec3(3, 0, 0), c + Vec3(-3, 0, 0), c + Vec3(0, 3, 0),
-                             c + Vec3(0, -3, 0), c + Vec3(0, 0, 3), c + Vec3(0, 0, -3)};
+  octahedron.positions_um = {c + Vec3(3, 0, 0),  c + Vec3(-3, 0, 0), c + Vec3(0, 3, 0),
+                             c + Vec3(0, -3, 0), c + Vec3(0, 0, 3),  c + Vec3(0, 0, -3)};
   octahedron.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                           {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
   TriangleMesh cube;

@@ -113,8 +113,8 @@ struct Trajectory {
 };
 
 // zero_classes: keep every node in viscosity class 0 (the outer fluid) despite a ratio.
-Trajectory run(const Scenario& scenario, const std::string& kernel, std::size_t steps,
-               int threads, bool zero_classes = false) {
+Trajectory run(const Scenario& scenario, const std::string& kernel, std::size_t steps, int threads,
+               bool zero_classes = false) {
   const int previous_threads = omp_get_max_threads();
   omp_set_num_threads(threads);
   FluidParameters parameters;

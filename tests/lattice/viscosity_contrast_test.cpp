@@ -75,9 +75,9 @@ TEST(ViscosityClasses, RatioMustBePositiveAndFinite) {
 enum class Drive { couette, poiseuille };
 
 struct TwoLayers {
-  int width = 24;           // fluid nodes across, walls half-way at y = 1/2 and width + 1/2
-  int lower_nodes = 10;     // nodes y = 1..lower_nodes at viscosity nu, the rest at lambda nu
-  double ratio = 5.0;       // lambda
+  int width = 24;        // fluid nodes across, walls half-way at y = 1/2 and width + 1/2
+  int lower_nodes = 10;  // nodes y = 1..lower_nodes at viscosity nu, the rest at lambda nu
+  double ratio = 5.0;    // lambda
   std::string kernel = "optimised";
   std::string collision = "trt";
   Drive drive = Drive::poiseuille;
@@ -98,9 +98,9 @@ struct TwoLayerProfile {
     const double h2 = y_top - y_interface;
     // Stress: -g h1 + nu1 A = g h2 + nu2 B; continuity:
     // -g h1^2/(2 nu1) + A h1 = top - g h2^2/(2 nu2) - B h2.
-    lower_slope = (top + g * h1 * h1 / (2.0 * nu1) - g * h2 * h2 / (2.0 * nu2) +
-                   h2 * g * (h1 + h2) / nu2) /
-                  (h1 + h2 * nu1 / nu2);
+    lower_slope =
+        (top + g * h1 * h1 / (2.0 * nu1) - g * h2 * h2 / (2.0 * nu2) + h2 * g * (h1 + h2) / nu2) /
+        (h1 + h2 * nu1 / nu2);
     upper_slope = (nu1 * lower_slope - g * (h1 + h2)) / nu2;
   }
   double operator()(double y) const {
@@ -117,8 +117,8 @@ double two_layer_error(const TwoLayers& layers) {
   parameters.collision = layers.collision;
   parameters.inner_viscosity_ratio = layers.ratio;
   const double nu1 = (parameters.collision_parameters.tau - 0.5) / 3.0;
-  TwoLayerProfile profile{0.5, layers.lower_nodes + 0.5, layers.width + 0.5, nu1,
-                          layers.ratio * nu1, 0.0, 0.0};
+  TwoLayerProfile profile{
+      0.5, layers.lower_nodes + 0.5, layers.width + 0.5, nu1, layers.ratio * nu1, 0.0, 0.0};
   if (layers.drive == Drive::poiseuille) {
     // About kPeakVelocity at the peak whatever the ratio.
     profile.g = 8.0 * std::max(nu1, profile.nu2) * kPeakVelocity / (layers.width * layers.width);
@@ -173,8 +173,9 @@ TEST(TwoLayerChannel, BgkPoiseuilleConvergesAtSecondOrder) {
   const double coarse_error = two_layer_error(coarse);
   const double fine_error = two_layer_error(fine);
   const double order = std::log2(coarse_error / fine_error);
-  std::printf("two-layer Poiseuille BGK, lambda 5: L2 error %.3e (24 nodes), %.3e (48), order %.2f\n",
-              coarse_error, fine_error, order);
+  std::printf(
+      "two-layer Poiseuille BGK, lambda 5: L2 error %.3e (24 nodes), %.3e (48), order %.2f\n",
+      coarse_error, fine_error, order);
   EXPECT_LT(coarse_error, 0.04);
   EXPECT_GT(order, 1.8);
 }
@@ -186,9 +187,13 @@ TEST(TwoLayerChannel, WithoutTheContrastTheProfileIsWrong) {
   const double with = two_layer_error(layers);
   FluidParameters parameters;
   const double nu = (parameters.collision_parameters.tau - 0.5) / 3.0;
-  TwoLayerProfile profile{0.5, layers.lower_nodes + 0.5, layers.width + 0.5, nu,
-                          layers.ratio * nu, 8.0 * layers.ratio * nu * kPeakVelocity /
-                                                 (layers.width * layers.width), 0.0};
+  TwoLayerProfile profile{0.5,
+                          layers.lower_nodes + 0.5,
+                          layers.width + 0.5,
+                          nu,
+                          layers.ratio * nu,
+                          8.0 * layers.ratio * nu * kPeakVelocity / (layers.width * layers.width),
+                          0.0};
   profile.solve();
   parameters.body_force = {profile.g, 0.0, 0.0};
   FluidSolver uniform(LatticeGrid(4, layers.width + 2, 1), parameters);
