@@ -87,7 +87,8 @@ TEST(CytoplasmIndicator, ClassesFollowTheCellEveryStepAcrossAPeriodicFace) {
 TEST(CytoplasmIndicator, ClassesLagTheCellByLessThanTheUpdateDisplacement) {
   const double limit = CouplingParameters{}.cytoplasm_update_lu;
   auto simulation = drifting_sphere(5.0, limit, 0.01);  // 0.01 dx per step
-  std::vector<std::vector<Vec3>> starts;  // the positions at the start of every step
+  // The positions at the start of every step.
+  std::vector<std::vector<Vec3>> starts;
   std::size_t last_match = 0;
   int recomputations = 0;
   for (int step = 0; step < 60; ++step) {

@@ -1,5 +1,6 @@
-// lattice.*, physics.cytoplasm_viscosity_ratio, ibm.*, stability.* and output.* options reach the fluid's and the coupled loop's
-// structs, and output intervals in seconds become whole numbers of steps.
+// lattice.*, physics.cytoplasm_viscosity_ratio, ibm.*, stability.* and output.* options reach the
+// fluid's and the coupled loop's structs, and output intervals in seconds become whole numbers of
+// steps.
 #include "setup/coupling_from_config.hpp"
 
 #include <gtest/gtest.h>
