@@ -102,6 +102,7 @@ Json coupled_entry(const coupling::CoupledStepTiming& timing, int threads,
                 {"phases_ms_per_step",
                  {{"membrane", phases.membrane_s * ms_per_step},
                   {"spread", phases.spread_s * ms_per_step},
+                  {"cytoplasm_indicator", phases.indicator_s * ms_per_step},
                   {"fluid", phases.fluid_s * ms_per_step},
                   {"interpolate_advance", phases.advance_s * ms_per_step},
                   {"checks", phases.checks_s * ms_per_step},
@@ -119,6 +120,7 @@ struct BenchSetup {
   membrane::MembraneParameters membrane;
   std::optional<units::UnitConverter> units;  // has no default state
   std::string ibm_kernel;
+  coupling::CytoplasmSettings cytoplasm;
   std::array<int, 3> large_lattice;
   std::size_t triad_elements;
   BenchReference reference;
@@ -139,10 +141,10 @@ Json measure_at(int threads, const BenchSetup& setup) {
                   roofline_mlups, threads, setup.reference));
   Json coupled = Json::array();
   for (const auto& cell : setup.cells) {
-    coupled.push_back(
-        coupled_entry(coupling::measure_coupled_step(cell, setup.membrane, *setup.units,
-                                                     kHemoCellLattice, setup.ibm_kernel, threads),
-                      threads, setup.reference));
+    coupled.push_back(coupled_entry(
+        coupling::measure_coupled_step(cell, setup.membrane, *setup.units, kHemoCellLattice,
+                                       setup.ibm_kernel, threads, setup.cytoplasm),
+        threads, setup.reference));
   }
   return {{"threads", threads},
           {"memory_bandwidth_GB_per_s", bandwidth},
@@ -161,6 +163,8 @@ BenchSetup bench_setup(const BenchOptions& options, const coupling::MachineDescr
   setup.membrane = setup::membrane_parameters_from(config);
   setup.units.emplace(config::make_unit_converter(config));
   setup.ibm_kernel = config.string("ibm.kernel");
+  setup.cytoplasm = {config.number("physics.cytoplasm_viscosity_ratio"),
+                     config.number("ibm.cytoplasm_update_dx")};
   setup.large_lattice = options.large_lattice.size() == 3
                             ? std::array<int, 3>{options.large_lattice[0], options.large_lattice[1],
                                                  options.large_lattice[2]}
@@ -321,6 +325,8 @@ void run_bench(const BenchOptions& options) {
   }
   const Json report = {{"machine", machine_json(machine)},
                        {"ibm_kernel", setup.ibm_kernel},
+                       {"cytoplasm_viscosity_ratio", setup.cytoplasm.viscosity_ratio},
+                       {"cytoplasm_update_dx", setup.cytoplasm.update_lu},
                        {"reference", reference_json(setup.reference)},
                        {"targets",
                         {{"roofline_fraction_large_lattice", kRooflineTarget},

@@ -77,9 +77,11 @@ std::size_t last_level_cache_bytes() {
 }
 
 std::unique_ptr<lattice::FluidSolver> shear_wave_fluid(const std::array<int, 3>& extent,
-                                                       double relaxation_time) {
+                                                       double relaxation_time,
+                                                       double cytoplasm_viscosity_ratio) {
   lattice::FluidParameters parameters;
   parameters.collision_parameters.tau = relaxation_time;
+  parameters.inner_viscosity_ratio = cytoplasm_viscosity_ratio;
   auto fluid = std::make_unique<lattice::FluidSolver>(
       lattice::LatticeGrid(extent[0], extent[1], extent[2]), parameters);
   const auto& grid = fluid->grid();
@@ -170,11 +172,15 @@ CoupledStepTiming measure_coupled_step(const mesh::TriangleMesh& cell_mesh,
                                        const membrane::MembraneParameters& membrane_parameters,
                                        const units::UnitConverter& units,
                                        const std::array<int, 3>& extent,
-                                       std::string_view ibm_kernel, int threads) {
+                                       std::string_view ibm_kernel, int threads,
+                                       const CytoplasmSettings& cytoplasm) {
   const ThreadCountScope thread_count(threads);
   CouplingParameters coupling;
   coupling.kernel = std::string(ibm_kernel);
-  CoupledSimulation simulation(shear_wave_fluid(extent, units.relaxation_time()), units, coupling);
+  coupling.cytoplasm_update_lu = cytoplasm.update_lu;
+  CoupledSimulation simulation(
+      shear_wave_fluid(extent, units.relaxation_time(), cytoplasm.viscosity_ratio), units,
+      coupling);
   const auto positions_um = centred_in_box(cell_mesh, extent, simulation.frame().dx_um);
   simulation.add_cell(membrane::MembraneModel(cell_mesh, membrane_parameters), positions_um);
   simulation.step();  // warm-up: sizes the stencil and the kernel's buffers

@@ -44,6 +44,13 @@ struct CoupledStepTiming {
   StepPhaseTimes fastest_batch_phases;
 };
 
+// The cytoplasm viscosity contrast of a measured step: a ratio other than 1 adds the indicator
+// (recomputed at the given cadence, CouplingParameters::cytoplasm_update_lu) and per-node rates.
+struct CytoplasmSettings {
+  double viscosity_ratio = 1.0;
+  double update_lu = CouplingParameters{}.cytoplasm_update_lu;
+};
+
 // One cell (`cell_mesh`, its own stress-free reference, centred in the box) in a periodic box of
 // `extent` nodes whose fluid starts as a shear wave, with the given lattice units (dx, tau) and
 // membrane parameters and IBM kernel; timed after one warm-up step on `threads` threads. Restores
@@ -52,6 +59,7 @@ CoupledStepTiming measure_coupled_step(const mesh::TriangleMesh& cell_mesh,
                                        const membrane::MembraneParameters& membrane_parameters,
                                        const units::UnitConverter& units,
                                        const std::array<int, 3>& extent,
-                                       std::string_view ibm_kernel, int threads);
+                                       std::string_view ibm_kernel, int threads,
+                                       const CytoplasmSettings& cytoplasm = {});
 
 }  // namespace rbcsim::coupling

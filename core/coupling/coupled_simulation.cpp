@@ -41,7 +41,7 @@ std::string criterion_prefix(std::size_t index) {
 }  // namespace
 
 double StepPhaseTimes::total_s() const {
-  return membrane_s + spread_s + fluid_s + advance_s + checks_s + observers_s;
+  return membrane_s + spread_s + indicator_s + fluid_s + advance_s + checks_s + observers_s;
 }
 
 CoupledSimulation::CoupledSimulation(std::unique_ptr<lattice::FluidSolver> fluid,
@@ -56,7 +56,12 @@ CoupledSimulation::CoupledSimulation(std::unique_ptr<lattice::FluidSolver> fluid
       grid_(grid_view_of(*fluid_)),
       kernel_(&ibm::find_delta_kernel(parameters_.kernel)),
       advance_scheme_(&ibm::find_point_advance_scheme(parameters_.point_advance)),
-      lattice_force_per_pN_(units.to_lattice(units::PhysicalUnit::force_pN, 1.0)) {}
+      lattice_force_per_pN_(units.to_lattice(units::PhysicalUnit::force_pN, 1.0)) {
+  // The cytoplasm's indicator is smoothed over the reach of the kernel that couples the membrane.
+  if (fluid_->has_viscosity_contrast()) {
+    cytoplasm_.emplace(0.5 * kernel_->support_width, parameters_.cytoplasm_update_lu);
+  }
+}
 
 std::size_t CoupledSimulation::add_cell(membrane::MembraneModel model,
                                         std::span<const Vec3> positions_um) {
@@ -184,6 +189,10 @@ void CoupledSimulation::check_cells() {
 void CoupledSimulation::step() {
   if (!forces_spread_) spread_forces();
   auto start = Clock::now();
+  if (cytoplasm_) {
+    cytoplasm_->update(cells_, grid_, fluid_->viscosity_classes());
+    lap(start, phase_times_.indicator_s);
+  }
   advance_fluid();
   lap(start, phase_times_.fluid_s);
   advance_cells();
@@ -280,6 +289,7 @@ void CoupledSimulation::save_state(StateArchive& archive) const {
   if (forces_spread_) throw std::logic_error("save_state between spread_forces() and step()");
   archive.put("simulation.time_step", {static_cast<double>(time_step_)});
   fluid_->save_state(archive);
+  if (cytoplasm_) cytoplasm_->save_state(archive);
   for (std::size_t k = 0; k < cells_.size(); ++k) {
     cells_[k].save_state(archive, cell_prefix(k));
     force_cap_monitors_[k].save_state(archive, cell_prefix(k));
@@ -292,6 +302,7 @@ void CoupledSimulation::save_state(StateArchive& archive) const {
 void CoupledSimulation::restore_state(StateArchive& archive) {
   time_step_ = static_cast<std::size_t>(archive.take_number("simulation.time_step"));
   fluid_->restore_state(archive);
+  if (cytoplasm_) cytoplasm_->restore_state(archive, cells_);
   for (std::size_t k = 0; k < cells_.size(); ++k) {
     cells_[k].restore_state(archive, cell_prefix(k), frame_);
     force_cap_monitors_[k].restore_state(archive, cell_prefix(k));

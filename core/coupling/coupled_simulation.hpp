@@ -3,7 +3,10 @@
 //   1. membrane forces at the current vertex positions, plus the external-force hooks (tweezers);
 //   2. pN -> lattice force, one interpolation stencil per cell, spread onto the force density
 //      (the sum of the spread forces equals the sum of the vertex forces);
-//   3. fluid collide-and-stream with that force (Guo);
+//   3. fluid collide-and-stream with that force (Guo); with a viscosity contrast
+//      (`physics.cytoplasm_viscosity_ratio`), the cells' interiors are located first, from the
+//      positions of this step or, if no vertex has moved far since, of an earlier one
+//      (cytoplasm_indicator.hpp);
 //   4. the Guo-corrected velocity interpolated at the vertices with the same stencil;
 //   5. vertices advanced (forward Euler by default, `ibm.point_advance`);
 //   6. stability checks (stability.hpp), then the observers that are due.
@@ -26,6 +29,7 @@
 
 #include "common/state_archive.hpp"
 #include "coupling/cell.hpp"
+#include "coupling/cytoplasm_indicator.hpp"
 #include "coupling/stability.hpp"
 #include "coupling/stop_criteria.hpp"
 #include "ibm/delta_kernels.hpp"
@@ -39,6 +43,9 @@ namespace rbcsim::coupling {
 struct CouplingParameters {
   std::string kernel = "phi2";          // ibm.kernel: a name of ibm::delta_kernels()
   std::string point_advance = "euler";  // ibm.point_advance: a name of ibm::point_advance_schemes()
+  // ibm.cytoplasm_update_dx: with a viscosity contrast, the cytoplasm's indicator is recomputed
+  // once a vertex has moved this far (lattice spacings) since the last time; 0: every step.
+  double cytoplasm_update_lu = 0.05;
   StabilityLimits stability;
   // Where failure dumps go (and what observers may write to); empty: no dump.
   std::filesystem::path run_directory;
@@ -75,6 +82,7 @@ using ExternalForce =
 struct StepPhaseTimes {
   double membrane_s = 0.0;   // phase 1 (membrane and external forces)
   double spread_s = 0.0;     // phase 2 (stencils, spreading)
+  double indicator_s = 0.0;  // phase 3, locating the cytoplasm (viscosity contrast only)
   double fluid_s = 0.0;      // phase 3
   double advance_s = 0.0;    // phases 4-5 (interpolation, vertex advance)
   double checks_s = 0.0;     // phase 6, the stability checks
@@ -181,6 +189,7 @@ class CoupledSimulation {
   std::vector<ExternalForce> external_forces_;
   std::vector<RegisteredObserver> observers_;
   std::vector<std::unique_ptr<StopCriterion>> stop_criteria_;
+  std::optional<CytoplasmIndicator> cytoplasm_;  // when the fluid has a viscosity contrast
   bool forces_spread_ = false;
   std::size_t time_step_ = 0;
   StepPhaseTimes phase_times_;

@@ -4,6 +4,7 @@
 #include "common/registry.hpp"
 
 #include <array>
+#include <cmath>
 #include <string>
 
 namespace rbcsim::lattice {
@@ -40,6 +41,30 @@ RelaxationRates relaxation_rates(std::string_view model, const CollisionParamete
                      "must be positive, got " + std::to_string(parameters.magic_parameter));
   }
   return find_entry(kCollisionModels, model, "lattice.collision").rates(parameters);
+}
+
+ViscosityClass viscosity_class(double indicator) {
+  return static_cast<ViscosityClass>(std::lround(indicator * (kViscosityClasses - 1)));
+}
+
+std::vector<RelaxationRates> viscosity_class_rates(std::string_view model,
+                                                   const CollisionParameters& parameters,
+                                                   double viscosity_ratio) {
+  if (!(viscosity_ratio > 0.0 && std::isfinite(viscosity_ratio))) {
+    throw InputError("physics.cytoplasm_viscosity_ratio",
+                     "must be positive and finite, got " + std::to_string(viscosity_ratio));
+  }
+  std::vector<RelaxationRates> rates;
+  rates.reserve(kViscosityClasses);
+  rates.push_back(relaxation_rates(model, parameters));
+  const double excess = parameters.tau - 0.5;
+  for (int k = 1; k < kViscosityClasses; ++k) {
+    const double indicator = static_cast<double>(k) / (kViscosityClasses - 1);
+    CollisionParameters local = parameters;
+    local.tau = 0.5 + excess * (1.0 + (viscosity_ratio - 1.0) * indicator);
+    rates.push_back(relaxation_rates(model, local));
+  }
+  return rates;
 }
 
 }  // namespace rbcsim::lattice

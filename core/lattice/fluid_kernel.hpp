@@ -71,6 +71,10 @@ struct StepParameters {
   std::array<double, 3> body_force = {0.0, 0.0, 0.0};  // uniform force density
   bool force_field_active = false;  // false: FluidArrays::force_density is zero and not read
   std::size_t time = 0;             // steps completed before this one
+  // Per-node viscosity (collision.hpp), both or neither: the class of every node in grid order, and
+  // the rates of each of the kViscosityClasses classes. Null: every node relaxes at `rates`.
+  const ViscosityClass* viscosity_classes = nullptr;
+  const RelaxationRates* class_rates = nullptr;
 };
 
 class FluidKernel {

@@ -19,6 +19,11 @@ FluidSolver::FluidSolver(LatticeGrid grid, FluidParameters parameters)
       rates_(lattice::relaxation_rates(parameters_.collision, parameters_.collision_parameters)),
       arrays_(grid.node_count()) {
   find_fluid_kernel(parameters_.kernel);
+  if (parameters_.inner_viscosity_ratio != 1.0) {
+    class_rates_ = viscosity_class_rates(parameters_.collision, parameters_.collision_parameters,
+                                         parameters_.inner_viscosity_ratio);
+    viscosity_classes_.assign(grid.node_count(), ViscosityClass{0});
+  }
   initialise_equilibrium(1.0, {0.0, 0.0, 0.0});
 }
 
@@ -161,7 +166,13 @@ void FluidSolver::ensure_kernel() {
 
 void FluidSolver::step() {
   ensure_kernel();
-  kernel_->step(arrays_, {rates_, parameters_.body_force, force_field_active_, time_});
+  const bool contrast = has_viscosity_contrast();
+  kernel_->step(arrays_, {.rates = rates_,
+                          .body_force = parameters_.body_force,
+                          .force_field_active = force_field_active_,
+                          .time = time_,
+                          .viscosity_classes = contrast ? viscosity_classes_.data() : nullptr,
+                          .class_rates = contrast ? class_rates_.data() : nullptr});
   ++time_;
   if (force_field_active_) {
     for (auto& component : arrays_.force_density) {
@@ -245,6 +256,18 @@ void FluidSolver::require_finite_velocity() const {
                          "; the flow is unstable (lattice velocity too high or tau too close "
                          "to 1/2)");
   }
+}
+
+std::span<ViscosityClass> FluidSolver::viscosity_classes() {
+  const auto classes = std::as_const(*this).viscosity_classes();
+  return {viscosity_classes_.data(), classes.size()};
+}
+
+std::span<const ViscosityClass> FluidSolver::viscosity_classes() const {
+  if (!has_viscosity_contrast()) {
+    throw std::logic_error("lattice: viscosity classes need a viscosity ratio other than 1");
+  }
+  return viscosity_classes_;
 }
 
 double FluidSolver::viscosity() const { return (1.0 / rates_.even - 0.5) * kSoundSpeedSquared; }

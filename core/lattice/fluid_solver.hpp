@@ -54,6 +54,11 @@ struct FluidParameters {
   // How wall links are closed: a name from wall_rules() (boundaries.hpp). Only links given to
   // set_wall_links differ from half-way bounce-back, whatever the rule.
   std::string wall_rule = "halfway";
+  // Viscosity contrast (collision.hpp): the viscosity at indicator H = 1 over that at H = 0 (the
+  // cytoplasm of cells over the plasma, `physics.cytoplasm_viscosity_ratio`). Anything but 1 gives
+  // every node a viscosity class, 0 (the outer fluid) until set through viscosity_classes(); 1:
+  // one viscosity everywhere, no classes, the uniform kernels.
+  double inner_viscosity_ratio = 1.0;
 };
 
 struct SteadyStateCriterion {
@@ -115,10 +120,19 @@ class FluidSolver {
   // not finite (the flow went unstable).
   void require_finite_velocity() const;
 
+  // Per-node viscosity, when parameters().inner_viscosity_ratio is not 1: the class of every node
+  // (grid order), which the next steps read (solid nodes' classes are ignored). The caller owns
+  // their values; they are not part of the checkpoint state (the coupled simulation recomputes
+  // them from the cells before every step). Throws std::logic_error without a contrast.
+  bool has_viscosity_contrast() const { return !class_rates_.empty(); }
+  std::span<ViscosityClass> viscosity_classes();
+  std::span<const ViscosityClass> viscosity_classes() const;
+
   const LatticeGrid& grid() const { return setup_.grid; }
   const FluidParameters& parameters() const { return parameters_; }
+  // The rates of the outer fluid (viscosity class 0).
   RelaxationRates relaxation_rates() const { return rates_; }
-  // Kinematic viscosity (1/omega_even - 1/2) / 3.
+  // Kinematic viscosity (1/omega_even - 1/2) / 3 of the outer fluid.
   double viscosity() const;
   std::size_t time() const { return time_; }
   double lees_edwards_offset() const;
@@ -148,6 +162,9 @@ class FluidSolver {
   LatticeSetup setup_;
   FluidParameters parameters_;
   RelaxationRates rates_;
+  // With a viscosity contrast: the rates of each class and the class of each node; else empty.
+  std::vector<RelaxationRates> class_rates_;
+  std::vector<ViscosityClass> viscosity_classes_;
   FluidArrays arrays_;
   std::unique_ptr<FluidKernel> kernel_;
   bool force_field_active_ = false;

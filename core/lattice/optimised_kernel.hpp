@@ -68,9 +68,12 @@ class OptimisedKernel final : public FluidKernel {
   };
 
  private:
-  template <bool kForceField>
+  // kPerNodeRates: every node relaxes at the rates of its viscosity class (collision.hpp).
+  template <bool kPerNodeRates>
+  void step_with(FluidArrays& arrays, const StepParameters& parameters);
+  template <bool kForceField, bool kPerNodeRates>
   void local_step(FluidArrays& arrays, const StepParameters& parameters) const;
-  template <bool kForceField>
+  template <bool kForceField, bool kPerNodeRates>
   void streaming_step(FluidArrays& arrays, const StepParameters& parameters);
   void store_wall_local_parts(const FluidArrays& arrays);
   void add_wall_parts_behind(FluidArrays& arrays) const;

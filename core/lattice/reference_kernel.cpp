@@ -89,8 +89,10 @@ void collide_reference(const LatticeSetup& setup, FluidArrays& arrays,
     }
     double density = 0.0;
     std::array<double, 3> velocity{};
-    collide_node_reference(f, node_force(arrays, parameters, node), parameters.rates, density,
-                           velocity);
+    const RelaxationRates& rates = parameters.viscosity_classes != nullptr
+                                       ? parameters.class_rates[parameters.viscosity_classes[node]]
+                                       : parameters.rates;
+    collide_node_reference(f, node_force(arrays, parameters, node), rates, density, velocity);
     for (int i = 0; i < kDirections; ++i) {
       arrays.populations[i * stride + node] = f[i];
     }

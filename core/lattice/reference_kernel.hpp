@@ -21,8 +21,8 @@ void collide_node_reference(std::array<double, kDirections>& f, const std::array
                             const RelaxationRates& rates, double& density,
                             std::array<double, 3>& velocity);
 
-// Collision at every fluid node of `arrays` (natural layout), in place; stores density and
-// velocity.
+// Collision at every fluid node of `arrays` (natural layout), in place, at the node's own rates
+// when the parameters give per-node viscosity classes; stores density and velocity.
 void collide_reference(const LatticeSetup& setup, FluidArrays& arrays,
                        const StepParameters& parameters);
 

@@ -21,6 +21,9 @@ lattice::FluidParameters fluid_parameters_from(const config::Config& config) {
   parameters.collision_parameters.magic_parameter = config.number("lattice.trt_magic");
   parameters.wall_rule = config.string("lattice.wall_rule");
   parameters.kernel = config.string("lattice.kernel");
+  // A ratio of viscosities, unchanged when a case scales the plasma's viscosity down (shear's
+  // viscosity_scaling, capillary's time_scale_compression): both fluids scale alike.
+  parameters.inner_viscosity_ratio = config.number("physics.cytoplasm_viscosity_ratio");
   return parameters;
 }
 
@@ -29,6 +32,7 @@ coupling::CouplingParameters coupling_parameters_from(const config::Config& conf
   coupling::CouplingParameters parameters;
   parameters.kernel = config.string("ibm.kernel");
   parameters.point_advance = config.string("ibm.point_advance");
+  parameters.cytoplasm_update_lu = config.number("ibm.cytoplasm_update_dx");
   auto& stability = parameters.stability;
   stability.max_vertex_step_lu = config.number("stability.max_vertex_step_dx");
   stability.force_cap_vertex_fraction = config.number("stability.force_cap_vertex_fraction");

@@ -1,5 +1,6 @@
-// lattice.*, ibm.*, stability.* and output.* options -> the fluid's and the coupled time loop's
-// parameter structs (lattice units where the engine wants them).
+// lattice.*, physics.cytoplasm_viscosity_ratio, ibm.*, stability.* and output.* options -> the
+// fluid's and the coupled time loop's parameter structs (lattice units where the engine wants
+// them).
 #pragma once
 
 #include <filesystem>
@@ -12,7 +13,8 @@
 
 namespace rbcsim::setup {
 
-// Collision model, relaxation time and TRT magic parameter.
+// Collision model, relaxation time and TRT magic parameter, kernel and wall rule, and the
+// cytoplasm's viscosity ratio.
 lattice::FluidParameters fluid_parameters_from(const config::Config& config);
 
 // IBM kernel and point advance, stability limits, and where failure dumps go.

@@ -1,6 +1,7 @@
 // The optimised kernel against the reference kernel, thread-count independence, and mass
 // conservation, on random-ish states with solids, force fields, every boundary kind and every wall
-// rule.
+// rule, with one viscosity everywhere and with per-node viscosity classes that change from node to
+// node.
 #include "lattice/fluid_solver.hpp"
 
 #include <omp.h>
@@ -21,6 +22,7 @@ struct Scenario {
   bool moving_obstacles = true;  // obstacle nodes with random wall velocities (break mass balance)
   std::string collision = "trt";
   std::string wall_rule = "halfway";  // other rules get random wall fractions on every wall link
+  double viscosity_ratio = 1.0;       // other ratios get a random viscosity class at every node
 };
 
 const LatticeGrid kGrid(20, 16, 14);  // above the threshold at which kernels use threads
@@ -78,6 +80,15 @@ void build_geometry(const Scenario& scenario, FluidSolver& solver) {
   }
 }
 
+// Every class 0..255 somewhere, neighbours unrelated: the sharpest contrast the kernels can meet.
+void set_random_viscosity_classes(FluidSolver& solver) {
+  std::mt19937 random(17);
+  std::uniform_int_distribution<int> draw(0, kViscosityClasses - 1);
+  for (ViscosityClass& node_class : solver.viscosity_classes()) {
+    node_class = static_cast<ViscosityClass>(draw(random));
+  }
+}
+
 // Equilibrium at random density and velocity plus random non-equilibrium parts.
 std::vector<double> random_populations(std::size_t node_count) {
   std::mt19937 random(11);
@@ -101,8 +112,9 @@ struct Trajectory {
   double final_mass = 0.0;
 };
 
-Trajectory run(const Scenario& scenario, const std::string& kernel, std::size_t steps,
-               int threads) {
+// zero_classes: keep every node in viscosity class 0 (the outer fluid) despite a ratio.
+Trajectory run(const Scenario& scenario, const std::string& kernel, std::size_t steps, int threads,
+               bool zero_classes = false) {
   const int previous_threads = omp_get_max_threads();
   omp_set_num_threads(threads);
   FluidParameters parameters;
@@ -114,8 +126,12 @@ Trajectory run(const Scenario& scenario, const std::string& kernel, std::size_t 
   if (scenario.sliding) {
     parameters.lees_edwards_velocity = 0.04;
   }
+  parameters.inner_viscosity_ratio = scenario.viscosity_ratio;
   FluidSolver solver(kGrid, parameters);
   build_geometry(scenario, solver);
+  if (solver.has_viscosity_contrast() && !zero_classes) {
+    set_random_viscosity_classes(solver);
+  }
   solver.initialise_populations(random_populations(kGrid.node_count()));
   Trajectory trajectory;
   trajectory.initial_mass = solver.total_mass();
@@ -157,7 +173,10 @@ const std::vector<Scenario> kScenarios = {{true, false, true, "trt"},
                                           {false, true, true, "trt"},
                                           {true, false, true, "bgk"},
                                           {true, false, true, "trt", "bouzidi"},
-                                          {false, true, true, "bgk", "bouzidi"}};
+                                          {false, true, true, "bgk", "bouzidi"},
+                                          {true, false, true, "trt", "halfway", 5.0},
+                                          {false, true, true, "trt", "bouzidi", 5.0},
+                                          {true, false, true, "bgk", "bouzidi", 0.3}};
 
 // The padding between population arrays (fluid_kernel.hpp): every array holds its nodes, starts
 // on a cache line, and the stride is an odd number of lines, so that 19 arrays never share their
@@ -197,12 +216,12 @@ TEST(KernelEquivalence, OptimisedMatchesReferenceWithEveryBoundary) {
         EXPECT_LT(largest_fluid_difference(reference.fields[s], optimised.fields[s], geometry),
                   1e-13)
             << "step " << s << (scenario.sliding ? " sliding " : " open channel ")
-            << scenario.wall_rule;
+            << scenario.wall_rule << " viscosity ratio " << scenario.viscosity_ratio;
       }
       EXPECT_LT(largest_fluid_difference(reference.populations, optimised.populations, geometry),
                 1e-13)
           << steps << " steps" << (scenario.sliding ? " sliding " : " open channel ")
-          << scenario.wall_rule;
+          << scenario.wall_rule << " viscosity ratio " << scenario.viscosity_ratio;
     }
   }
 }
@@ -215,6 +234,23 @@ TEST(KernelEquivalence, OneAndTwoThreadsAreBitIdentical) {
       EXPECT_TRUE(one.fields == two.fields) << kernel;
       EXPECT_TRUE(one.populations == two.populations) << kernel;
       EXPECT_EQ(one.final_mass, two.final_mass) << kernel;
+    }
+  }
+}
+
+// With a viscosity ratio but every node in class 0 (outside every cell), both kernels take the
+// per-node path and must give exactly the uniform kernels' bits: class 0 holds the plain rates.
+TEST(KernelEquivalence, EveryNodeInClassZeroIsTheUniformKernelBitForBit) {
+  for (const char* kernel : {"optimised", "reference"}) {
+    for (const auto& scenario : kScenarios) {
+      if (scenario.viscosity_ratio != 1.0) continue;
+      Scenario contrast = scenario;
+      contrast.viscosity_ratio = 5.0;
+      const auto steps = 5u;
+      const Trajectory uniform = run(scenario, kernel, steps, 1);
+      const Trajectory per_node = run(contrast, kernel, steps, 1, /*zero_classes=*/true);
+      EXPECT_TRUE(uniform.fields == per_node.fields) << kernel << " " << scenario.collision;
+      EXPECT_TRUE(uniform.populations == per_node.populations) << kernel;
     }
   }
 }

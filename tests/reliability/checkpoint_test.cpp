@@ -1,7 +1,8 @@
 // Checkpoint and resume of the coupled loop (docs/architecture.md): N steps straight and N/2 +
 // checkpoint + a new simulation resumed for N/2 give bit-identical positions and populations, with
-// 1 and 2 threads; a checkpoint of another setup, config or a damaged file is refused with one
-// line; an interrupted run writes a checkpoint.
+// 1 and 2 threads, also with a cytoplasm viscosity contrast (whose indicator is recomputed from the
+// positions, not saved); a checkpoint of another setup, config or a damaged file is refused with
+// one line; an interrupted run writes a checkpoint.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -22,7 +23,6 @@ namespace rbcsim::coupling {
 namespace {
 
 using rbcsim::testing::ScratchDirectory;
-using testing::lees_edwards_fluid;
 using testing::plasma_units;
 using testing::sphere_mesh;
 using testing::stretched;
@@ -34,9 +34,14 @@ constexpr const char* kFingerprint = "config sha256 of the test";
 
 // A deformed capsule in a Lees-Edwards shear flow (the fluid's step count moves the sliding
 // images, so it must be restored too), advanced with AB2 (a velocity history), stopped by time
-// with two criteria that remember something.
-std::unique_ptr<CoupledSimulation> sheared_capsule(int nx = 20) {
-  auto fluid = lees_edwards_fluid(nx, 18, 16, 0.02);
+// with two criteria that remember something. A viscosity ratio other than 1 makes the interior
+// more viscous.
+std::unique_ptr<CoupledSimulation> sheared_capsule(int nx = 20, double viscosity_ratio = 1.0) {
+  lattice::FluidParameters fluid_parameters;
+  fluid_parameters.lees_edwards_velocity = 0.02;
+  fluid_parameters.inner_viscosity_ratio = viscosity_ratio;
+  auto fluid =
+      std::make_unique<lattice::FluidSolver>(lattice::LatticeGrid(nx, 18, 16), fluid_parameters);
   CouplingParameters parameters;
   parameters.point_advance = "ab2";
   auto simulation =
@@ -80,19 +85,19 @@ void expect_identical(const FinalState& straight, const FinalState& resumed) {
 
 // Runs kSteps straight with a checkpoint every kSteps / 2 (so the file holds step kSteps / 2),
 // then resumes a new simulation from it with `resume_threads` and runs it to kSteps.
-void check_resume(int straight_threads, int resume_threads) {
+void check_resume(int straight_threads, int resume_threads, double viscosity_ratio = 1.0) {
   const ScratchDirectory scratch;
   const auto file = scratch.path() / kCheckpointFileName;
   FinalState straight;
   {
     const ThreadCountScope threads(straight_threads);
-    auto simulation = sheared_capsule();
+    auto simulation = sheared_capsule(20, viscosity_ratio);
     simulation->set_checkpoint_policy({file, kFingerprint, kSteps / 2, 0.0});
     EXPECT_EQ(simulation->run().stop_reason.rfind("reached the time limit", 0), 0u);
     straight = final_state(*simulation);
   }
   const ThreadCountScope threads(resume_threads);
-  auto resumed = sheared_capsule();
+  auto resumed = sheared_capsule(20, viscosity_ratio);
   resumed->set_checkpoint_policy({file, kFingerprint, 0, 0.0});
   resumed->resume_from(file);
   EXPECT_EQ(resumed->time_step(), kSteps / 2);
@@ -107,6 +112,11 @@ TEST(Checkpoint, ResumedRunIsBitIdenticalWithOneThread) { check_resume(1, 1); }
 TEST(Checkpoint, ResumedRunIsBitIdenticalWithTwoThreadsAndAcrossThreadCounts) {
   check_resume(2, 2);
   check_resume(1, 2);
+}
+
+TEST(Checkpoint, ResumedRunWithACytoplasmViscosityContrastIsBitIdentical) {
+  check_resume(1, 1, 5.0);
+  check_resume(2, 1, 5.0);
 }
 
 class CheckpointRefused : public ::testing::Test {

@@ -1,5 +1,6 @@
-// lattice.*, ibm.*, stability.* and output.* options reach the fluid's and the coupled loop's
-// structs, and output intervals in seconds become whole numbers of steps.
+// lattice.*, physics.cytoplasm_viscosity_ratio, ibm.*, stability.* and output.* options reach the
+// fluid's and the coupled loop's structs, and output intervals in seconds become whole numbers of
+// steps.
 #include "setup/coupling_from_config.hpp"
 
 #include <gtest/gtest.h>
@@ -26,7 +27,7 @@ TEST(CouplingFromConfig, DefaultsAndOverridesReachTheStructs) {
                        "stability.max_vertex_step_dx=0.25",
                        "stability.force_cap_vertex_fraction=0.2", "stability.force_cap_max_steps=7",
                        "stability.fluid_check_interval_steps=9", "lattice.collision=bgk",
-                       "lattice.relaxation_time=0.8"}});
+                       "lattice.relaxation_time=0.8", "physics.cytoplasm_viscosity_ratio=5"}});
   const auto parameters = rbcsim::setup::coupling_parameters_from(config, "");
   EXPECT_EQ(parameters.kernel, "phi4");
   EXPECT_EQ(parameters.point_advance, "ab2");
@@ -38,6 +39,10 @@ TEST(CouplingFromConfig, DefaultsAndOverridesReachTheStructs) {
   EXPECT_EQ(fluid.collision, "bgk");
   EXPECT_DOUBLE_EQ(fluid.collision_parameters.tau, 0.8);
   EXPECT_DOUBLE_EQ(fluid.collision_parameters.magic_parameter, 3.0 / 16.0);
+  EXPECT_EQ(fluid.inner_viscosity_ratio, 5.0);
+  EXPECT_EQ(rbcsim::setup::fluid_parameters_from(resolve_config()).inner_viscosity_ratio, 1.0);
+  EXPECT_THROW(resolve_config({.assignments = {"physics.cytoplasm_viscosity_ratio=0"}}),
+               rbcsim::InputError);
 }
 
 TEST(CouplingFromConfig, SnapshotIntervalsAreRoundedToWholeSteps) {

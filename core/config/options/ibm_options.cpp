@@ -24,6 +24,13 @@ void add_ibm_options(OptionTable& table) {
                    kIbmDefaults.point_advance,
                    "How vertices follow the interpolated velocity: euler (x += u dt, HemoCell's "
                    "scheme) or ab2 (second-order Adams-Bashforth).");
+  // H has slope <= 1/eps (eps >= 1 dx): 0.05 dx keeps the classes within 0.05 of the membrane's H.
+  table
+      .add_number("ibm.cytoplasm_update_dx", "dx", kIbmDefaults.cytoplasm_update_lu,
+                  "With physics.cytoplasm_viscosity_ratio != 1: recompute where the cytoplasm is "
+                  "once a vertex has moved this far since the last time; 0: every step.")
+      .at_least(0.0)
+      .at_most(0.5);
 }
 
 }  // namespace rbcsim::config
