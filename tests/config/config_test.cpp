@@ -97,8 +97,8 @@ TEST(ResolveConfig, MorphologyComesFromTheLastSourceThatSetsIt) {
 }
 
 // The presets (share/config/presets): `paper` is the paper's membrane as printed, the default;
-// `physiological` adds the bilayer's area incompressibility and membrane viscosity at their
-// literature values. Every other layer (morphology, files, --set) goes over a preset.
+// `physiological` adds the bilayer's area incompressibility, membrane viscosity and the
+// cytoplasm's viscosity at their literature values. Every other layer (morphology, files, --set) goes over a preset.
 TEST(ResolveConfig, PresetsAreWholeParameterSetsUnderEveryOtherLayer) {
   const auto paper = resolve_config();
   EXPECT_EQ(paper.string("preset"), "paper");
@@ -112,6 +112,8 @@ TEST(ResolveConfig, PresetsAreWholeParameterSetsUnderEveryOtherLayer) {
   with_both.insert(with_both.end(), {"total_area", "viscosity"});
   EXPECT_EQ(physiological.string_list("membrane.forces"), with_both);
   EXPECT_EQ(physiological.number("membrane.viscosity_Pa_s_um"), 0.5);  // Hochmuth & Hampel 1979
+  EXPECT_EQ(physiological.number("physics.cytoplasm_viscosity_ratio"), 5.0);
+  EXPECT_EQ(paper.number("physics.cytoplasm_viscosity_ratio"), 1.0);
   EXPECT_EQ(physiological.number("membrane.k_bend_kBT"), 70.0);       // the morphology's still
   const ScratchDirectory directory;
   const auto file = directory.write("p.json", R"({"preset": "physiological"})");

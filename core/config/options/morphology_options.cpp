@@ -39,7 +39,8 @@ void add_morphology_options(OptionTable& table) {
                    "Whole parameter set under the morphology's and the user's settings: paper (the "
                    "paper's six forces as printed, plasma inside the cell, no membrane "
                    "viscosity) or physiological (plus the bilayer's area incompressibility, "
-                   "membrane viscosity and the cytoplasm's viscosity; docs/physics.md).");
+                   "membrane viscosity and a cytoplasm five times as viscous as plasma; "
+                   "docs/physics.md).");
 }
 
 }  // namespace rbcsim::config
