@@ -336,6 +336,7 @@ StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const Stretch
     progress.points.push_back(point);
     if (observer) {
       // After a membrane failure its forces are those of a shape at a force law's limit: none.
+      if (run.ok()) simulation->add_term_forces();
       const auto& state = simulation->cell(0);
       const auto tweezers_pN = tweezer_forces_pN(model.vertex_count(), cell.patches, force_pN);
       observer({progress.points.size() - 1, progress.points.back(), positions_um,

@@ -434,7 +434,10 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
   point.strain = simulation.time_s() * time_unit_rate;
   point.time_s = simulation.time_s() * plan.viscosity_scale;
   point.wall_time_s = record.wall_time_s();
-  if (point.failure.empty() && hooks.finished) hooks.finished(rate_index, point, simulation);
+  if (point.failure.empty() && hooks.finished) {
+    simulation.add_term_forces();  // the shape file shows each term's forces
+    hooks.finished(rate_index, point, simulation);
+  }
   return point;
 }
 

@@ -37,13 +37,21 @@ Vec3 Cell::centroid_lu() const {
   return sum / static_cast<double>(positions_lu_.size());
 }
 
-void Cell::compute_membrane_forces(const LatticeFrame& frame) {
+void Cell::compute_membrane_forces(const LatticeFrame& frame, membrane::ForceDetail detail) {
   for (std::size_t v = 0; v < positions_lu_.size(); ++v) {
     positions_um_[v] = frame.to_um(positions_lu_[v]);
   }
   if (model_.has_dissipative_terms()) predict_membrane_velocities(frame);
-  model_.compute(positions_um_, membrane_velocities_um_per_s_, workspace_, membrane_forces_);
+  model_.compute(positions_um_, membrane_velocities_um_per_s_, workspace_, membrane_forces_,
+                 detail);
   for (Vec3& force : external_forces_pN_) force.setZero();
+}
+
+void Cell::add_term_forces(const LatticeFrame&) {
+  const auto& terms = membrane_forces_.terms;
+  if (terms.empty() || terms.front().forces_pN.size() == vertex_count()) return;
+  model_.compute(positions_um_, membrane_velocities_um_per_s_, workspace_, membrane_forces_,
+                 membrane::ForceDetail::per_term);
 }
 
 void Cell::spread_forces(double lattice_force_per_pN, const ibm::DeltaKernel& kernel,

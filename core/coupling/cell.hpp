@@ -66,9 +66,13 @@ class Cell {
   Vec3 centroid_lu() const;
 
   // Step phase 1: membrane forces at the current positions (the external forces are zeroed, for
-  // the driver's hooks to add to). Throws RuntimeFailure from the membrane (a deviation at its
-  // limit, a non-finite force).
-  void compute_membrane_forces(const LatticeFrame& frame);
+  // the driver's hooks to add to), the totals only unless `detail` asks for every term's too.
+  // Throws RuntimeFailure from the membrane (a deviation at its limit, a non-finite force).
+  void compute_membrane_forces(const LatticeFrame& frame,
+                               membrane::ForceDetail detail = membrane::ForceDetail::totals);
+  // Adds each term's forces to the latest step's membrane forces, if they lack them: the same
+  // evaluation again with the detail (the totals come out bit-identical, membrane_forces.hpp).
+  void add_term_forces(const LatticeFrame& frame);
   std::span<Vec3> external_forces_pN() { return external_forces_pN_; }
   // Phase 2: total = membrane + external; builds the stencil once for this step and spreads
   // total * lattice_force_per_pN into `force_density`. Throws RuntimeFailure for a non-finite

@@ -207,6 +207,7 @@ void CoupledSimulation::step() {
 }
 
 void CoupledSimulation::notify(RegisteredObserver& registered) {
+  if (registered.observer.needs_term_forces) add_term_forces();
   registered.observer.observe(*this);
   registered.last_observed_step = time_step_;
 }
@@ -318,7 +319,11 @@ void CoupledSimulation::restore_state(StateArchive& archive) {
   }
 }
 
-void CoupledSimulation::fail(std::optional<std::size_t> cell, const std::string& reason) const {
+void CoupledSimulation::add_term_forces() {
+  for (auto& cell : cells_) cell.add_term_forces(frame_);
+}
+
+void CoupledSimulation::fail(std::optional<std::size_t> cell, const std::string& reason) {
   std::string where = "step " + std::to_string(time_step_ + 1) + ", " +
                       (cell ? cell_label(*cell) : std::string("fluid")) + ": " + reason;
   if (parameters_.run_directory.empty()) {
@@ -326,6 +331,12 @@ void CoupledSimulation::fail(std::optional<std::size_t> cell, const std::string&
   }
   const auto directory = parameters_.run_directory / "failure";
   try {
+    // The dump shows each term's forces of the failing step where they can be computed (a term
+    // at its limit cannot: then the dump has the totals of the step before).
+    try {
+      add_term_forces();
+    } catch (const RuntimeFailure&) {
+    }
     write_failure_dump(directory, *this, cell, reason);
   } catch (const std::exception& dump_error) {
     throw RuntimeFailure(where + "; the dump to " + directory.string() +

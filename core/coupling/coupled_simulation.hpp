@@ -71,6 +71,10 @@ struct Observer {
   // Optional: called once a checkpoint is restored, so an observer that writes a growing file
   // (a snapshot collection) continues what the interrupted run wrote up to that state.
   std::function<void(const CoupledSimulation&)> resumed = nullptr;
+  // Whether it reads each membrane term's forces (Cell::membrane_forces().terms): a step computes
+  // only the totals it spreads, and the per-term forces of that step are added before such an
+  // observer is called.
+  bool needs_term_forces = false;
 };
 
 // Adds forces (pN) to a cell's vertices every step, e.g. optical tweezers. Called after the
@@ -141,6 +145,11 @@ class CoupledSimulation {
   // Calls every observer now (for instance for the initial state).
   void observe_all();
 
+  // Adds each term's forces to every cell's membrane forces of the latest step, which a step
+  // computes as totals only (Cell::add_term_forces). Observers that declare needs_term_forces get
+  // them without asking; call it before reading MembraneForces::terms elsewhere.
+  void add_term_forces();
+
   const lattice::FluidSolver& fluid() const { return *fluid_; }
   std::span<const Cell> cells() const { return cells_; }
   const Cell& cell(std::size_t index) const { return cells_.at(index); }
@@ -174,7 +183,7 @@ class CoupledSimulation {
   // The observers see the state reached, a checkpoint is written, Interrupted thrown.
   [[noreturn]] void stop_interrupted();
   // Writes the failure dump (if there is a run directory) and throws RuntimeFailure.
-  [[noreturn]] void fail(std::optional<std::size_t> cell, const std::string& reason) const;
+  [[noreturn]] void fail(std::optional<std::size_t> cell, const std::string& reason);
 
   std::unique_ptr<lattice::FluidSolver> fluid_;
   units::UnitConverter units_;

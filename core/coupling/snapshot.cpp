@@ -104,7 +104,10 @@ void write_cell_snapshot(const std::filesystem::path& path, const CoupledSimulat
   const auto velocities_m_per_s = scaled(
       cell.velocities_lu(), simulation.units().to_physical(PhysicalUnit::velocity_m_per_s, 1.0));
   std::vector<io::PointDataArray> arrays;
+  // Each term's forces when the step has them (CoupledSimulation::add_term_forces; a failure
+  // dump of a step whose forces could not be evaluated has only the totals).
   for (const auto& term : cell.membrane_forces().terms) {
+    if (term.forces_pN.size() != cell.vertex_count()) continue;
     arrays.push_back(io::vector_point_array("force_" + term.name + "_pN", term.forces_pN));
   }
   arrays.push_back(io::vector_point_array("membrane_force_pN", cell.membrane_forces().total_pN));
@@ -146,7 +149,8 @@ void add_vtk_output(CoupledSimulation& simulation, const std::filesystem::path& 
     simulation.add_observer(
         {"vtk_membrane", intervals.membrane_steps,
          [state](const CoupledSimulation& s) { write_membranes(*state, s); },
-         [state](const CoupledSimulation& s) { continue_membranes(*state, s); }});
+         [state](const CoupledSimulation& s) { continue_membranes(*state, s); },
+         /*needs_term_forces=*/true});
   }
   if (intervals.fluid_steps > 0) {
     simulation.add_observer({"vtk_fluid", intervals.fluid_steps,
