@@ -5,6 +5,7 @@
 // way).
 #include "membrane/edge_friction.hpp"
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -100,26 +101,41 @@ std::size_t solve_implicit_friction(std::span<const Vec3> positions, std::span<c
                                     std::span<Vec3> velocities,
                                     const ImplicitFrictionSettings& settings) {
   const std::size_t count = network.vertex_count();
-  // A x = M x + Gamma x = M x - friction(x).
+  // The edges' unit axes, fixed during the solve.
+  std::vector<Vec3> axes(network.edges.size());
+  for (std::size_t e = 0; e < axes.size(); ++e) {
+    const auto& edge = network.edges[e];
+    axes[e] = (positions[edge.vertex0] - positions[edge.vertex1]).normalized();
+  }
+  // A x = M x + Gamma x = M x - friction(x), edge by edge in edge order. Serial: one solve is many
+  // short passes, for which threads would cost more in synchronisation than they save (a cell at
+  // a time; many cells are parallel over cells).
   std::vector<Vec3> product(count);
   auto apply = [&](std::span<const Vec3> x, std::span<Vec3> out) {
-    parallel_for(count, [&](std::size_t v) {
-      out[v] = masses[v] * x[v] - vertex_force(positions, x, network, friction, v);
-    });
-  };
-  // The diagonal of A per component: m + sum over the vertex's edges of gamma_T + gamma_C e_c^2.
-  std::vector<Vec3> inverse_diagonal(count);
-  parallel_for(count, [&](std::size_t v) {
-    const auto& offsets = network.vertex_edge_offsets;
-    Vec3 diagonal = Vec3::Constant(masses[v]);
-    for (auto k = offsets[v]; k < offsets[v + 1]; ++k) {
-      const auto& edge = network.edges[network.vertex_edges[k]];
-      const Vec3 axis = (positions[edge.vertex0] - positions[edge.vertex1]).normalized();
-      diagonal += Vec3::Constant(friction.tangential_pN_s_per_um) +
-                  friction.central_pN_s_per_um * axis.cwiseProduct(axis);
+    for (std::size_t v = 0; v < count; ++v) out[v] = masses[v] * x[v];
+    for (std::size_t e = 0; e < axes.size(); ++e) {
+      const auto& edge = network.edges[e];
+      const Vec3 relative = x[edge.vertex0] - x[edge.vertex1];
+      const Vec3 resisted = friction.tangential_pN_s_per_um * relative +
+                            friction.central_pN_s_per_um * relative.dot(axes[e]) * axes[e];
+      out[edge.vertex0] += resisted;
+      out[edge.vertex1] -= resisted;
     }
-    inverse_diagonal[v] = diagonal.cwiseInverse();
-  });
+  };
+  // Block-diagonal preconditioner: the inverse of each vertex's 3x3 block of A,
+  // m I + sum over its edges of gamma_T I + gamma_C e e^T.
+  std::vector<Eigen::Matrix3d> inverse_blocks(count);
+  for (std::size_t v = 0; v < count; ++v) {
+    inverse_blocks[v] = masses[v] * Eigen::Matrix3d::Identity();
+  }
+  for (std::size_t e = 0; e < axes.size(); ++e) {
+    const Eigen::Matrix3d block =
+        friction.tangential_pN_s_per_um * Eigen::Matrix3d::Identity() +
+        friction.central_pN_s_per_um * axes[e] * axes[e].transpose();
+    inverse_blocks[network.edges[e].vertex0] += block;
+    inverse_blocks[network.edges[e].vertex1] += block;
+  }
+  for (auto& block : inverse_blocks) block = block.inverse().eval();
   std::vector<Vec3> residual(count), preconditioned(count), direction(count);
   apply(velocities, product);
   double target_norm_squared = 0.0;
@@ -127,7 +143,7 @@ std::size_t solve_implicit_friction(std::span<const Vec3> positions, std::span<c
     const Vec3 right_hand_side = masses[v] * target_velocities[v];
     residual[v] = right_hand_side - product[v];
     target_norm_squared += right_hand_side.squaredNorm();
-    preconditioned[v] = inverse_diagonal[v].cwiseProduct(residual[v]);
+    preconditioned[v] = inverse_blocks[v] * residual[v];
   }
   if (target_norm_squared == 0.0) {  // at rest: the exact solution, whatever the start
     for (auto& velocity : velocities) velocity.setZero();
@@ -145,7 +161,7 @@ std::size_t solve_implicit_friction(std::span<const Vec3> positions, std::span<c
     for (std::size_t v = 0; v < count; ++v) {
       velocities[v] += step * direction[v];
       residual[v] -= step * product[v];
-      preconditioned[v] = inverse_diagonal[v].cwiseProduct(residual[v]);
+      preconditioned[v] = inverse_blocks[v] * residual[v];
     }
     const double next_rho = dot(residual, preconditioned);
     const double beta = next_rho / rho;

@@ -74,11 +74,10 @@ double edge_friction_power(std::span<const Vec3> positions, std::span<const Vec3
 //   (M + Gamma) V = M U,
 // with M = diag(masses) the inertia the fluid lends each vertex in one step and Gamma V the
 // friction the vertices exert on each other (Gamma V = -edge_friction_forces at V, in the same
-// units: masses and friction in force per velocity). Conjugate gradients preconditioned with the
-// diagonal, started from `velocities` (the previous step's), to a residual below
-// relative_tolerance * |M U|. Sums in a fixed order, so the result does not depend on the thread
-// count. Returns the iterations used; throws RuntimeFailure when max_iterations do not reach the
-// tolerance.
+// units: masses and friction in force per velocity). Conjugate gradients preconditioned with each
+// vertex's 3x3 block, started from `velocities` (the previous step's), to a residual below
+// relative_tolerance * |M U|. Serial, sums in a fixed order. Returns the iterations used;
+// throws RuntimeFailure when max_iterations do not reach the tolerance.
 struct ImplicitFrictionSettings {
   double relative_tolerance = 1e-10;
   std::size_t max_iterations = 500;
