@@ -104,6 +104,7 @@ Json coupled_entry(const coupling::CoupledStepTiming& timing, int threads,
                   {"spread", phases.spread_s * ms_per_step},
                   {"cytoplasm_indicator", phases.indicator_s * ms_per_step},
                   {"fluid", phases.fluid_s * ms_per_step},
+                  {"membrane_friction", phases.friction_s * ms_per_step},
                   {"interpolate_advance", phases.advance_s * ms_per_step},
                   {"checks", phases.checks_s * ms_per_step},
                   {"observers", phases.observers_s * ms_per_step}}}};

@@ -1,5 +1,6 @@
 #include "coupling/cell.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -41,16 +42,26 @@ void Cell::compute_membrane_forces(const LatticeFrame& frame, membrane::ForceDet
   for (std::size_t v = 0; v < positions_lu_.size(); ++v) {
     positions_um_[v] = frame.to_um(positions_lu_[v]);
   }
-  if (model_.has_dissipative_terms()) predict_membrane_velocities(frame);
-  model_.compute(positions_um_, membrane_velocities_um_per_s_, workspace_, membrane_forces_,
-                 detail);
+  // No velocities: the membrane's friction acts through apply_membrane_friction, not through
+  // the force spread.
+  model_.compute(positions_um_, workspace_, membrane_forces_, detail);
   for (Vec3& force : external_forces_pN_) force.setZero();
 }
 
-void Cell::add_term_forces(const LatticeFrame&) {
+void Cell::add_term_forces(const LatticeFrame& frame) {
   const auto& terms = membrane_forces_.terms;
   if (terms.empty() || terms.front().forces_pN.size() == vertex_count()) return;
-  model_.compute(positions_um_, membrane_velocities_um_per_s_, workspace_, membrane_forces_,
+  if (!model_.has_dissipative_terms()) {
+    model_.compute(positions_um_, workspace_, membrane_forces_, membrane::ForceDetail::per_term);
+    return;
+  }
+  // With the friction at the velocities of the latest implicit step, so that the output shows it.
+  const double um_per_s_per_lu = frame.dx_um / frame.dt_s;
+  std::vector<Vec3> velocities_um_per_s(vertex_count());
+  for (std::size_t v = 0; v < vertex_count(); ++v) {
+    velocities_um_per_s[v] = um_per_s_per_lu * membrane_velocities_lu_[v];
+  }
+  model_.compute(positions_um_, velocities_um_per_s, workspace_, membrane_forces_,
                  membrane::ForceDetail::per_term);
 }
 
@@ -69,74 +80,51 @@ void Cell::spread_forces(double lattice_force_per_pN, const ibm::DeltaKernel& ke
                      force_density[2].data());
 }
 
+bool Cell::has_membrane_friction() const {
+  const auto& friction = model_.edge_friction();
+  return friction.central_pN_s_per_um > 0.0 || friction.tangential_pN_s_per_um > 0.0;
+}
+
+void Cell::apply_membrane_friction(lattice::FluidSolver& fluid, const LatticeFrame& frame,
+                                   std::size_t time_step) {
+  if (!has_membrane_friction() || !fluid.populations_natural()) return;
+  // The friction in lattice force per lattice velocity: gamma pN/(um/s) times (dx/dt um/s per
+  // lattice velocity) times (lattice force per pN).
+  const double per_pN_s_per_um = frame.dx_um / frame.dt_s * frame.lattice_force_per_pN;
+  const auto& friction = model_.edge_friction();
+  const membrane::EdgeFrictionParameters friction_lu{
+      friction.central_pN_s_per_um * per_pN_s_per_um,
+      friction.tangential_pN_s_per_um * per_pN_s_per_um};
+  // Every step the populations are natural (reference kernel), every second step otherwise
+  // (the optimised kernel's AA pattern): each step covers the steps since the previous one.
+  const auto dt_steps = static_cast<double>(time_step - last_friction_step_);
+  friction_iterations_ = friction_.apply(stencil_, positions_lu_,
+                                         membrane::EdgeNetwork::of(model_.topology()), friction_lu,
+                                         dt_steps, fluid, membrane_velocities_lu_);
+  last_friction_step_ = time_step;
+  friction_applied_ = true;
+}
+
 void Cell::interpolate_and_advance(const ibm::GridView& grid, const lattice::VectorField& velocity) {
   ibm::interpolate_velocity(stencil_, grid, velocity[0].data(), velocity[1].data(),
                             velocity[2].data(), velocities_lu_);
-  if (model_.has_dissipative_terms()) lend_masses();
+  // After an implicit friction step the membrane moves as that step found it (the friction acted
+  // on the fluid's state after streaming, which the latest collision's velocity precedes).
+  if (friction_applied_) {
+    std::copy(membrane_velocities_lu_.begin(), membrane_velocities_lu_.end(), velocities_lu_.begin());
+    friction_applied_ = false;
+  }
   previous_positions_lu_ = positions_lu_;
   advancer_.advance(positions_lu_, velocities_lu_);
-}
-
-void Cell::lend_masses() {
-  // A force spread from a vertex moves the fluid at every node of its stencil, and so the
-  // interpolated velocity of every vertex whose stencil shares those nodes. Over a smooth pattern
-  // of forces the response of vertex i is sum_n w_in sum_j w_jn: the unit spread from all the
-  // cell's vertices and interpolated back, the largest response any pattern gets in one step (its
-  // row sum). The mass lent is kLentMassFraction of its inverse: the implicit step must not
-  // underestimate the fluid's response by more than a factor of 2 (predict_membrane_velocities),
-  // and over the steps a force acts the fluid's response to a smooth pattern grows beyond the
-  // one-step estimate (measured: unstable at 1 and 1/2 of it in a sheared capsule at the red
-  // cell's membrane viscosity, stable at 1/5; tests/coupling/shear_rotation_test.cpp).
-  constexpr double kLentMassFraction = 0.2;
-  if (weight_density_.size() < ibm::node_count(stencil_.grid())) {
-    weight_density_.assign(ibm::node_count(stencil_.grid()), 0.0);
-  }
-  for (std::size_t v = 0; v < vertex_count(); ++v) {
-    const auto nodes = stencil_.nodes(v);
-    const auto weights = stencil_.weights(v);
-    for (std::size_t k = 0; k < nodes.size(); ++k) weight_density_[nodes[k]] += weights[k];
-  }
-  lent_masses_.resize(vertex_count());
-  for (std::size_t v = 0; v < vertex_count(); ++v) {
-    const auto nodes = stencil_.nodes(v);
-    const auto weights = stencil_.weights(v);
-    double response = 0.0;
-    for (std::size_t k = 0; k < nodes.size(); ++k) response += weights[k] * weight_density_[nodes[k]];
-    lent_masses_[v] = kLentMassFraction / response;
-  }
-  for (std::size_t v = 0; v < vertex_count(); ++v) {
-    for (const auto node : stencil_.nodes(v)) weight_density_[node] = 0.0;
-  }
-}
-
-void Cell::predict_membrane_velocities(const LatticeFrame& frame) {
-  if (!lent_masses_.empty()) {  // none before the first step: at rest, no friction
-    // The friction in lattice force per lattice velocity: gamma pN/(um/s) times (dx/dt um/s per
-    // lattice velocity) times (lattice force per pN).
-    const double per_pN_s_per_um = frame.dx_um / frame.dt_s * frame.lattice_force_per_pN;
-    const auto& friction = model_.edge_friction();
-    const membrane::EdgeFrictionParameters friction_lu{
-        friction.central_pN_s_per_um * per_pN_s_per_um,
-        friction.tangential_pN_s_per_um * per_pN_s_per_um};
-    // Started from the previous step's solution.
-    friction_iterations_ = membrane::solve_implicit_friction(
-        positions_lu_, lent_masses_, velocities_lu_, membrane::EdgeNetwork::of(model_.topology()),
-        friction_lu, membrane_velocities_lu_, {.relative_tolerance = kFrictionTolerance});
-  }
-  const double um_per_s_per_lu = frame.dx_um / frame.dt_s;
-  membrane_velocities_um_per_s_.resize(vertex_count());
-  for (std::size_t v = 0; v < vertex_count(); ++v) {
-    membrane_velocities_um_per_s_[v] = um_per_s_per_lu * membrane_velocities_lu_[v];
-  }
 }
 
 void Cell::save_state(StateArchive& archive, const std::string& prefix) const {
   archive.put(prefix + "positions_lu", positions_lu_);
   archive.put(prefix + "previous_positions_lu", previous_positions_lu_);
   archive.put(prefix + "velocities_lu", velocities_lu_);
-  if (model_.has_dissipative_terms()) {
+  if (has_membrane_friction()) {
     archive.put(prefix + "membrane_velocities_lu", membrane_velocities_lu_);
-    archive.put(prefix + "lent_masses", lent_masses_);
+    archive.put(prefix + "last_friction_step", {static_cast<double>(last_friction_step_)});
   }
   advancer_.save_state(archive, prefix);
 }
@@ -146,9 +134,10 @@ void Cell::restore_state(StateArchive& archive, const std::string& prefix,
   archive.take(prefix + "positions_lu", positions_lu_);
   archive.take(prefix + "previous_positions_lu", previous_positions_lu_);
   archive.take(prefix + "velocities_lu", velocities_lu_);
-  if (model_.has_dissipative_terms()) {
+  if (has_membrane_friction()) {
     archive.take(prefix + "membrane_velocities_lu", membrane_velocities_lu_);
-    lent_masses_ = archive.take(prefix + "lent_masses", std::nullopt);
+    last_friction_step_ =
+        static_cast<std::size_t>(archive.take_number(prefix + "last_friction_step"));
   }
   advancer_.restore_state(archive, prefix, vertex_count());
   // Where the next step computes the forces; until then, what positions_um() shows.

@@ -14,11 +14,13 @@
 
 #include "common/state_archive.hpp"
 #include "common/vec3.hpp"
+#include "coupling/membrane_friction.hpp"
 #include "ibm/delta_kernels.hpp"
 #include "ibm/grid_view.hpp"
 #include "ibm/interpolation_stencil.hpp"
 #include "ibm/point_advance.hpp"
 #include "lattice/fluid_kernel.hpp"
+#include "lattice/fluid_solver.hpp"
 #include "membrane/membrane_model.hpp"
 
 namespace rbcsim::coupling {
@@ -57,9 +59,8 @@ class Cell {
   std::span<const Vec3> total_forces_pN() const { return total_forces_pN_; }
   // The fluid velocity interpolated at the vertices in the latest step, lattice units.
   std::span<const Vec3> velocities_lu() const { return velocities_lu_; }
-  // With membrane viscosity: the velocities the latest friction forces were computed at
-  // (predict_membrane_velocities), lattice units, and the conjugate-gradient iterations that
-  // found them.
+  // With membrane viscosity: the vertex velocities of the latest implicit friction step (the
+  // membrane's velocity S u' there, lattice units) and the conjugate-gradient iterations it took.
   std::span<const Vec3> membrane_velocities_lu() const { return membrane_velocities_lu_; }
   std::size_t friction_iterations() const { return friction_iterations_; }
   // Mean vertex position, summed in vertex order (thread-count independent), lattice units.
@@ -71,7 +72,9 @@ class Cell {
   void compute_membrane_forces(const LatticeFrame& frame,
                                membrane::ForceDetail detail = membrane::ForceDetail::totals);
   // Adds each term's forces to the latest step's membrane forces, if they lack them: the same
-  // evaluation again with the detail (the totals come out bit-identical, membrane_forces.hpp).
+  // evaluation again with the detail (the totals come out bit-identical, membrane_forces.hpp),
+  // and with membrane viscosity its friction at membrane_velocities_lu(), which the totals then
+  // include (the step exchanged it with the fluid implicitly, not through the spread).
   void add_term_forces(const LatticeFrame& frame);
   std::span<Vec3> external_forces_pN() { return external_forces_pN_; }
   // Phase 2: total = membrane + external; builds the stencil once for this step and spreads
@@ -80,6 +83,13 @@ class Cell {
   void spread_forces(double lattice_force_per_pN, const ibm::DeltaKernel& kernel,
                      const ibm::GridView& grid, const std::uint8_t* solid_mask,
                      lattice::VectorField& force_density);
+  // After the fluid step, with membrane viscosity and the fluid's populations in natural layout:
+  // the implicit friction step on the fluid under the membrane (membrane_friction.hpp), over the
+  // steps since the previous one; `time_step` counts the steps completed. Throws RuntimeFailure
+  // when its solve does not converge.
+  bool has_membrane_friction() const;
+  void apply_membrane_friction(lattice::FluidSolver& fluid, const LatticeFrame& frame,
+                               std::size_t time_step);
   // Phases 4-5: interpolates `velocity` with the same stencil, then moves the vertices (dt = 1).
   void interpolate_and_advance(const ibm::GridView& grid, const lattice::VectorField& velocity);
 
@@ -90,17 +100,6 @@ class Cell {
   void restore_state(StateArchive& archive, const std::string& prefix, const LatticeFrame& frame);
 
  private:
-  // Membrane viscosity, implicit (docs/physics.md, "Membrane viscosity"): the friction -Gamma V
-  // spread in a step is taken at the velocities V that solve (M + Gamma) V = M U, U the fluid
-  // velocity interpolated in the previous step (what the vertices would move with without the
-  // friction) and M the fluid mass each vertex lends (lend_masses): V is the velocity the fluid
-  // at the vertices takes once it has felt the friction. The vertices still move with the fluid
-  // (no slip). The friction is two orders of magnitude too stiff for an explicit coupling at the
-  // paper's lattice; this keeps it stable and, in a steady flow, V = U.
-  void predict_membrane_velocities(const LatticeFrame& frame);
-  void lend_masses();
-  static constexpr double kFrictionTolerance = 1e-4;
-
   membrane::MembraneModel model_;
   std::vector<Vec3> positions_lu_;
   std::vector<Vec3> previous_positions_lu_;
@@ -111,12 +110,11 @@ class Cell {
   std::vector<Vec3> total_forces_pN_;
   std::vector<Vec3> forces_lu_;
   std::vector<Vec3> velocities_lu_;
-  // With membrane viscosity (predict_membrane_velocities): the velocities of the friction, in
-  // lattice units and um/s, and the fluid mass lent to each vertex.
+  // With membrane viscosity (apply_membrane_friction).
+  ImplicitMembraneFriction friction_;
   std::vector<Vec3> membrane_velocities_lu_;
-  std::vector<Vec3> membrane_velocities_um_per_s_;
-  std::vector<double> lent_masses_;
-  std::vector<double> weight_density_;  // per lattice node, zero between steps
+  std::size_t last_friction_step_ = 0;
+  bool friction_applied_ = false;  // in this step, so the advance takes its velocities
   std::size_t friction_iterations_ = 0;
   ibm::InterpolationStencil stencil_;
   ibm::PointAdvancer advancer_;

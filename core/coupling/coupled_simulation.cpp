@@ -41,7 +41,8 @@ std::string criterion_prefix(std::size_t index) {
 }  // namespace
 
 double StepPhaseTimes::total_s() const {
-  return membrane_s + spread_s + indicator_s + fluid_s + advance_s + checks_s + observers_s;
+  return membrane_s + spread_s + indicator_s + fluid_s + friction_s + advance_s + checks_s +
+         observers_s;
 }
 
 CoupledSimulation::CoupledSimulation(std::unique_ptr<lattice::FluidSolver> fluid,
@@ -159,6 +160,16 @@ void CoupledSimulation::advance_fluid() {
   }
 }
 
+void CoupledSimulation::apply_membrane_friction() {
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    try {
+      cells_[k].apply_membrane_friction(*fluid_, frame_, time_step_ + 1);
+    } catch (const RuntimeFailure& failure) {
+      fail(k, failure.what());
+    }
+  }
+}
+
 void CoupledSimulation::advance_cells() {
   for (std::size_t k = 0; k < cells_.size(); ++k) {
     try {
@@ -195,6 +206,8 @@ void CoupledSimulation::step() {
   }
   advance_fluid();
   lap(start, phase_times_.fluid_s);
+  apply_membrane_friction();
+  lap(start, phase_times_.friction_s);
   advance_cells();
   lap(start, phase_times_.advance_s);
   check_cells();

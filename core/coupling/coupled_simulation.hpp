@@ -6,8 +6,10 @@
 //   3. fluid collide-and-stream with that force (Guo); with a viscosity contrast
 //      (`physics.cytoplasm_viscosity_ratio`), the cells' interiors are located first, from the
 //      positions of this step or, if no vertex has moved far since, of an earlier one
-//      (cytoplasm_indicator.hpp);
-//   4. the Guo-corrected velocity interpolated at the vertices with the same stencil;
+//      (cytoplasm_indicator.hpp); with membrane viscosity, then the implicit friction step on
+//      the fluid under each membrane (membrane_friction.hpp), when the populations are natural;
+//   4. the Guo-corrected velocity interpolated at the vertices with the same stencil (after a
+//      friction step: the membrane velocity that step found);
 //   5. vertices advanced (forward Euler by default, `ibm.point_advance`);
 //   6. stability checks (stability.hpp), then the observers that are due.
 // Every phase is deterministic, so results do not depend on the number of OpenMP threads.
@@ -88,6 +90,7 @@ struct StepPhaseTimes {
   double spread_s = 0.0;     // phase 2 (stencils, spreading)
   double indicator_s = 0.0;  // phase 3, locating the cytoplasm (viscosity contrast only)
   double fluid_s = 0.0;      // phase 3
+  double friction_s = 0.0;   // phase 3, the implicit membrane friction (membrane viscosity only)
   double advance_s = 0.0;    // phases 4-5 (interpolation, vertex advance)
   double checks_s = 0.0;     // phase 6, the stability checks
   double observers_s = 0.0;  // observers (output, measurements)
@@ -172,6 +175,7 @@ class CoupledSimulation {
   };
 
   void advance_fluid();
+  void apply_membrane_friction();
   void advance_cells();
   void check_cells();
   void notify_due_observers();

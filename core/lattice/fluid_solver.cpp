@@ -278,6 +278,46 @@ double FluidSolver::lees_edwards_offset() const {
              : 0.0;
 }
 
+void FluidSolver::pre_collision_moments(std::span<const std::size_t> nodes,
+                                        std::span<double> density,
+                                        std::span<Vec3> momentum) const {
+  if (!populations_natural()) {
+    throw std::logic_error("FluidSolver::pre_collision_moments: the populations are swapped");
+  }
+  const std::size_t stride = arrays_.population_stride;
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    double mass = 0.0;
+    Vec3 sum = Vec3::Zero();
+    for (int i = 0; i < kDirections; ++i) {
+      const double f = arrays_.populations[static_cast<std::size_t>(i) * stride + nodes[k]];
+      const auto& c = kVelocities[i];
+      mass += f;
+      sum += f * Vec3(c[0], c[1], c[2]);
+    }
+    density[k] = mass;
+    momentum[k] = sum;
+  }
+}
+
+void FluidSolver::add_momentum(std::span<const std::size_t> nodes, std::span<const Vec3> momentum) {
+  if (!populations_natural()) {
+    throw std::logic_error("FluidSolver::add_momentum: the populations are in swapped layout");
+  }
+  const std::size_t stride = arrays_.population_stride;
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    const std::size_t node = nodes[k];
+    const Vec3& p = momentum[k];
+    for (int i = 1; i < kDirections; ++i) {
+      const auto& c = kVelocities[i];
+      arrays_.populations[static_cast<std::size_t>(i) * stride + node] +=
+          kInverseSoundSpeedSquared * kWeights[i] * (c[0] * p.x() + c[1] * p.y() + c[2] * p.z());
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      arrays_.velocity[axis][node] += p[axis] / arrays_.density[node];
+    }
+  }
+}
+
 std::array<double, 3> FluidSolver::velocity_at(std::size_t node) const {
   return {arrays_.velocity[0][node], arrays_.velocity[1][node], arrays_.velocity[2][node]};
 }

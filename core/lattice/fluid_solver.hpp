@@ -28,6 +28,7 @@
 #pragma once
 
 #include "common/state_archive.hpp"
+#include "common/vec3.hpp"
 #include "lattice/collision.hpp"
 #include "lattice/fluid_kernel.hpp"
 #include "lattice/wall_link.hpp"
@@ -140,6 +141,19 @@ class FluidSolver {
   const std::vector<double>& density() const { return arrays_.density; }
   const VectorField& velocity() const { return arrays_.velocity; }
   std::array<double, 3> velocity_at(std::size_t node) const;
+  // Whether the populations are in natural layout between two steps (always with the reference
+  // kernel; after every second step with the optimised one): only then can momentum be added.
+  bool populations_natural() const { return arrays_.layout == PopulationLayout::natural; }
+  // The density and momentum sum_i f_i c_i of the pre-collision populations of each node (what
+  // the next collision starts from, without its force), between two steps. Throws
+  // std::logic_error unless populations_natural().
+  void pre_collision_moments(std::span<const std::size_t> nodes, std::span<double> density,
+                             std::span<Vec3> momentum) const;
+  // Adds momentum[k] (lattice units, rho u) to fluid node nodes[k] between two steps: each
+  // pre-collision population f_i gains 3 w_i c_i . momentum, which keeps the node's mass and adds
+  // exactly that momentum, and the velocity of the latest collision gains momentum / density (so
+  // an interpolation now sees it). Throws std::logic_error unless populations_natural().
+  void add_momentum(std::span<const std::size_t> nodes, std::span<const Vec3> momentum);
   // Sum of all populations of the fluid nodes, independent of the thread count.
   double total_mass() const;
   // Pre-collision populations in natural layout, whatever the kernel's current layout.

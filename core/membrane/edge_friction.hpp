@@ -16,9 +16,11 @@
 #pragma once
 
 #include <cstddef>
+#include <Eigen/Dense>
 #include <cstdint>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "common/registry.hpp"
 #include "common/vec3.hpp"
@@ -70,23 +72,16 @@ void edge_friction_forces(std::span<const Vec3> positions, std::span<const Vec3>
 double edge_friction_power(std::span<const Vec3> positions, std::span<const Vec3> velocities,
                            const EdgeNetwork& network, const EdgeFrictionParameters& friction);
 
-// The implicit step of a friction too stiff for an explicit coupling: the velocities V that solve
-//   (M + Gamma) V = M U,
-// with M = diag(masses) the inertia the fluid lends each vertex in one step and Gamma V the
-// friction the vertices exert on each other (Gamma V = -edge_friction_forces at V, in the same
-// units: masses and friction in force per velocity). Conjugate gradients preconditioned with each
-// vertex's 3x3 block, started from `velocities` (the previous step's), to a residual below
-// relative_tolerance * |M U|. Serial, sums in a fixed order. Returns the iterations used;
-// throws RuntimeFailure when max_iterations do not reach the tolerance.
-struct ImplicitFrictionSettings {
-  double relative_tolerance = 1e-10;
-  std::size_t max_iterations = 500;
-};
-std::size_t solve_implicit_friction(std::span<const Vec3> positions, std::span<const double> masses,
-                                    std::span<const Vec3> target_velocities,
-                                    const EdgeNetwork& network,
-                                    const EdgeFrictionParameters& friction,
-                                    std::span<Vec3> velocities,
-                                    const ImplicitFrictionSettings& settings = {});
+// For repeated products at one configuration (an implicit solve): the edges' unit axes, and
+// Gamma v, the friction that relative velocities v meet (minus the friction force), ADDED to
+// `out` edge by edge in edge order (serial), and each vertex's 3x3 diagonal block of Gamma
+// (sum over its edges of gamma_T I + gamma_C e e^T), added to `blocks`.
+std::vector<Vec3> edge_axes(std::span<const Vec3> positions, const EdgeNetwork& network);
+void add_friction_resistance(std::span<const Vec3> axes, std::span<const Vec3> velocities,
+                             const EdgeNetwork& network, const EdgeFrictionParameters& friction,
+                             std::span<Vec3> out);
+void add_friction_diagonal(std::span<const Vec3> axes, const EdgeNetwork& network,
+                           const EdgeFrictionParameters& friction,
+                           std::span<Eigen::Matrix3d> blocks);
 
 }  // namespace rbcsim::membrane

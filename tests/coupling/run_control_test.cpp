@@ -97,8 +97,8 @@ TEST(RunControl, PhaseTimesAddUpToTheSteps) {
   EXPECT_GT(times.fluid_s, 0.0);
   EXPECT_GT(times.membrane_s, 0.0);
   EXPECT_DOUBLE_EQ(times.total_s(), times.membrane_s + times.spread_s + times.indicator_s +
-                                        times.fluid_s + times.advance_s + times.checks_s +
-                                        times.observers_s);
+                                        times.fluid_s + times.friction_s + times.advance_s +
+                                        times.checks_s + times.observers_s);
   simulation->reset_phase_times();
   EXPECT_EQ(simulation->phase_times().steps, 0u);
 }

@@ -1,7 +1,8 @@
 // Checkpoint and resume of the coupled loop (docs/architecture.md): N steps straight and N/2 +
 // checkpoint + a new simulation resumed for N/2 give bit-identical positions and populations, with
 // 1 and 2 threads, also with a cytoplasm viscosity contrast (whose indicator is recomputed from the
-// positions, not saved); a checkpoint of another setup, config or a damaged file is refused with
+// positions, not saved) and with membrane viscosity (whose implicit step, every second step of the
+// optimised fluid kernel, must resume in phase); a checkpoint of another setup, config or a damaged file is refused with
 // one line; an interrupted run writes a checkpoint.
 #include <gtest/gtest.h>
 
@@ -36,7 +37,8 @@ constexpr const char* kFingerprint = "config sha256 of the test";
 // images, so it must be restored too), advanced with AB2 (a velocity history), stopped by time
 // with two criteria that remember something. A viscosity ratio other than 1 makes the interior
 // more viscous.
-std::unique_ptr<CoupledSimulation> sheared_capsule(int nx = 20, double viscosity_ratio = 1.0) {
+std::unique_ptr<CoupledSimulation> sheared_capsule(int nx = 20, double viscosity_ratio = 1.0,
+                                                   bool membrane_viscosity = false) {
   lattice::FluidParameters fluid_parameters;
   fluid_parameters.lees_edwards_velocity = 0.02;
   fluid_parameters.inner_viscosity_ratio = viscosity_ratio;
@@ -48,7 +50,9 @@ std::unique_ptr<CoupledSimulation> sheared_capsule(int nx = 20, double viscosity
       std::make_unique<CoupledSimulation>(std::move(fluid), plasma_units(), parameters);
   const Vec3 centre_um(4.7, 4.3, 3.9);
   const auto sphere = sphere_mesh(2, 2.0, centre_um);
-  simulation->add_cell(membrane::MembraneModel(sphere, membrane::MembraneParameters{}),
+  membrane::MembraneParameters membrane;
+  if (membrane_viscosity) membrane.forces.push_back("viscosity");
+  simulation->add_cell(membrane::MembraneModel(sphere, membrane),
                        stretched(sphere, centre_um, Vec3(1.1, 0.95, 1.0)));
   const double dt_s = simulation->units().to_physical(units::PhysicalUnit::time_s, 1.0);
   simulation->add_stop_criterion(stop_at_time(static_cast<double>(kSteps) * dt_s));
@@ -85,19 +89,20 @@ void expect_identical(const FinalState& straight, const FinalState& resumed) {
 
 // Runs kSteps straight with a checkpoint every kSteps / 2 (so the file holds step kSteps / 2),
 // then resumes a new simulation from it with `resume_threads` and runs it to kSteps.
-void check_resume(int straight_threads, int resume_threads, double viscosity_ratio = 1.0) {
+void check_resume(int straight_threads, int resume_threads, double viscosity_ratio = 1.0,
+                  bool membrane_viscosity = false) {
   const ScratchDirectory scratch;
   const auto file = scratch.path() / kCheckpointFileName;
   FinalState straight;
   {
     const ThreadCountScope threads(straight_threads);
-    auto simulation = sheared_capsule(20, viscosity_ratio);
+    auto simulation = sheared_capsule(20, viscosity_ratio, membrane_viscosity);
     simulation->set_checkpoint_policy({file, kFingerprint, kSteps / 2, 0.0});
     EXPECT_EQ(simulation->run().stop_reason.rfind("reached the time limit", 0), 0u);
     straight = final_state(*simulation);
   }
   const ThreadCountScope threads(resume_threads);
-  auto resumed = sheared_capsule(20, viscosity_ratio);
+  auto resumed = sheared_capsule(20, viscosity_ratio, membrane_viscosity);
   resumed->set_checkpoint_policy({file, kFingerprint, 0, 0.0});
   resumed->resume_from(file);
   EXPECT_EQ(resumed->time_step(), kSteps / 2);
@@ -117,6 +122,11 @@ TEST(Checkpoint, ResumedRunIsBitIdenticalWithTwoThreadsAndAcrossThreadCounts) {
 TEST(Checkpoint, ResumedRunWithACytoplasmViscosityContrastIsBitIdentical) {
   check_resume(1, 1, 5.0);
   check_resume(2, 1, 5.0);
+}
+
+TEST(Checkpoint, ResumedRunWithMembraneViscosityIsBitIdentical) {
+  check_resume(1, 1, 1.0, true);
+  check_resume(2, 1, 1.0, true);
 }
 
 class CheckpointRefused : public ::testing::Test {

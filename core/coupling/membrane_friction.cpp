@@ -1,0 +1,161 @@
+#include "coupling/membrane_friction.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+
+namespace rbcsim::coupling {
+namespace {
+
+double dot(std::span<const Vec3> a, std::span<const Vec3> b) {
+  double sum = 0.0;
+  for (std::size_t k = 0; k < a.size(); ++k) sum += a[k].dot(b[k]);
+  return sum;
+}
+
+}  // namespace
+
+void ImplicitMembraneFriction::gather_nodes(const ibm::InterpolationStencil& stencil) {
+  nodes_.clear();
+  for (std::size_t v = 0; v < stencil.point_count(); ++v) {
+    const auto nodes = stencil.nodes(v);
+    nodes_.insert(nodes_.end(), nodes.begin(), nodes.end());
+  }
+  std::sort(nodes_.begin(), nodes_.end());
+  nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
+  slot_node_.clear();
+  slot_offsets_.assign(1, 0);
+  for (std::size_t v = 0; v < stencil.point_count(); ++v) {
+    for (const auto node : stencil.nodes(v)) {
+      slot_node_.push_back(static_cast<std::size_t>(
+          std::lower_bound(nodes_.begin(), nodes_.end(), node) - nodes_.begin()));
+    }
+    slot_offsets_.push_back(slot_node_.size());
+  }
+}
+
+std::size_t ImplicitMembraneFriction::apply(const ibm::InterpolationStencil& stencil,
+                                            std::span<const Vec3> positions_lu,
+                                            const membrane::EdgeNetwork& network,
+                                            const membrane::EdgeFrictionParameters& friction_lu,
+                                            double dt_steps, lattice::FluidSolver& fluid,
+                                            std::span<Vec3> membrane_velocities_lu,
+                                            const ImplicitFrictionSettings& settings) {
+  gather_nodes(stencil);
+  const std::size_t node_count = nodes_.size();
+  const std::size_t vertex_count = stencil.point_count();
+  const auto axes = membrane::edge_axes(positions_lu, network);
+  // The fluid as the next collision will find it (after streaming, before the next force): the
+  // friction must act on that state, not on the latest collision's velocity, which streaming
+  // has since moved by a link (acting on the stale one pumps energy into the flow).
+  std::vector<double> density(node_count);
+  std::vector<Vec3> fluid_velocity(node_count);
+  fluid.pre_collision_moments(nodes_, density, fluid_velocity);
+  for (std::size_t k = 0; k < node_count; ++k) fluid_velocity[k] /= density[k];
+  // S x (nodes -> vertices), S^T y (vertices -> nodes), in slot order.
+  auto interpolate = [&](std::span<const Vec3> x, std::span<Vec3> out) {
+    for (std::size_t v = 0; v < vertex_count; ++v) {
+      const auto weights = stencil.weights(v);
+      Vec3 sum = Vec3::Zero();
+      for (std::size_t s = slot_offsets_[v]; s < slot_offsets_[v + 1]; ++s) {
+        sum += weights[s - slot_offsets_[v]] * x[slot_node_[s]];
+      }
+      out[v] = sum;
+    }
+  };
+  auto spread = [&](std::span<const Vec3> y, std::span<Vec3> out) {
+    std::fill(out.begin(), out.end(), Vec3::Zero());
+    for (std::size_t v = 0; v < vertex_count; ++v) {
+      const auto weights = stencil.weights(v);
+      for (std::size_t s = slot_offsets_[v]; s < slot_offsets_[v + 1]; ++s) {
+        out[slot_node_[s]] += weights[s - slot_offsets_[v]] * y[v];
+      }
+    }
+  };
+  std::vector<Vec3> vertex_values(vertex_count), resistance(vertex_count);
+  // A x = rho x + dt S^T Gamma S x.
+  auto apply_operator = [&](std::span<const Vec3> x, std::span<Vec3> out) {
+    interpolate(x, vertex_values);
+    std::fill(resistance.begin(), resistance.end(), Vec3::Zero());
+    membrane::add_friction_resistance(axes, vertex_values, network, friction_lu, resistance);
+    spread(resistance, out);
+    for (std::size_t k = 0; k < node_count; ++k) out[k] = density[k] * x[k] + dt_steps * out[k];
+  };
+  // Preconditioner: per node, rho I + dt sum over the vertices it serves of w^2 times the
+  // vertex's diagonal block of Gamma.
+  std::vector<Eigen::Matrix3d> vertex_blocks(vertex_count, Eigen::Matrix3d::Zero());
+  membrane::add_friction_diagonal(axes, network, friction_lu, vertex_blocks);
+  std::vector<Eigen::Matrix3d> inverse_blocks(node_count, Eigen::Matrix3d::Zero());
+  for (std::size_t k = 0; k < node_count; ++k) {
+    inverse_blocks[k] = density[k] * Eigen::Matrix3d::Identity();
+  }
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    const auto weights = stencil.weights(v);
+    for (std::size_t s = slot_offsets_[v]; s < slot_offsets_[v + 1]; ++s) {
+      const double w = weights[s - slot_offsets_[v]];
+      inverse_blocks[slot_node_[s]] += dt_steps * w * w * vertex_blocks[v];
+    }
+  }
+  for (auto& block : inverse_blocks) block = block.inverse().eval();
+
+  std::vector<Vec3> velocity = fluid_velocity;  // u', starting from u
+  std::vector<Vec3> product(node_count), residual(node_count), preconditioned(node_count),
+      direction(node_count);
+  apply_operator(velocity, product);
+  double momentum_squared = 0.0;
+  for (std::size_t k = 0; k < node_count; ++k) {
+    residual[k] = density[k] * fluid_velocity[k] - product[k];
+    preconditioned[k] = inverse_blocks[k] * residual[k];
+    momentum_squared += (density[k] * fluid_velocity[k]).squaredNorm();
+  }
+  // Relative to the first residual (the friction at u' = u), but never below round-off of the
+  // momentum itself (a rigid motion meets no friction: there the first residual is round-off).
+  constexpr double kRoundOff = 1e-13;
+  const double tolerance_squared =
+      std::max(settings.relative_tolerance * settings.relative_tolerance * dot(residual, residual),
+               kRoundOff * kRoundOff * momentum_squared);
+  direction = preconditioned;
+  double rho = dot(residual, preconditioned);
+  std::size_t iterations = 0;
+  for (;; ++iterations) {
+    if (dot(residual, residual) <= tolerance_squared) break;
+    if (iterations == settings.max_iterations) {
+      throw RuntimeFailure("membrane viscosity: the implicit friction step did not converge in " +
+                           std::to_string(settings.max_iterations) + " iterations (residual " +
+                           format_significant(std::sqrt(dot(residual, residual) /
+                                                        std::max(tolerance_squared, 1e-300)) *
+                                              settings.relative_tolerance) +
+                           " of the first)");
+    }
+    apply_operator(direction, product);
+    const double step = rho / dot(direction, product);
+    for (std::size_t k = 0; k < node_count; ++k) {
+      velocity[k] += step * direction[k];
+      residual[k] -= step * product[k];
+      preconditioned[k] = inverse_blocks[k] * residual[k];
+    }
+    const double next_rho = dot(residual, preconditioned);
+    const double beta = next_rho / rho;
+    rho = next_rho;
+    for (std::size_t k = 0; k < node_count; ++k) {
+      direction[k] = preconditioned[k] + beta * direction[k];
+    }
+  }
+  // The momentum exchanged is the friction impulse at the solution, -dt S^T Gamma S u', rather
+  // than rho (u' - u): equal to the tolerance, and it sums to zero exactly (each edge's pair
+  // cancels, each vertex's weights sum to 1), converged or not.
+  interpolate(velocity, membrane_velocities_lu);
+  std::fill(resistance.begin(), resistance.end(), Vec3::Zero());
+  membrane::add_friction_resistance(axes, membrane_velocities_lu, network, friction_lu, resistance);
+  std::vector<Vec3> momentum(node_count);
+  spread(resistance, momentum);
+  for (auto& value : momentum) value *= -dt_steps;
+  fluid.add_momentum(nodes_, momentum);
+  return iterations;
+}
+
+}  // namespace rbcsim::coupling
