@@ -125,7 +125,20 @@ void MembraneModel::compute(std::span<const Vec3> positions_um,
                                 " vertices");
   }
   kernel_->compute(*this, positions_um, workspace, forces, detail);
-  if (has_dissipative_terms()) add_dissipative_forces(positions_um, velocities_um_per_s, workspace, forces, detail);
+  if (!has_dissipative_terms()) return;
+  if (!velocities_um_per_s.empty()) {
+    add_dissipative_forces(positions_um, velocities_um_per_s, workspace, forces, detail);
+    return;
+  }
+  // At rest a dissipative term exerts nothing: no evaluation, only its (zero) output.
+  for (std::size_t i = kernel_term_count_; i < forces.terms.size(); ++i) {
+    auto& term = forces.terms[i];
+    term.max_abs_deviation = 0.0;
+    if (detail == ForceDetail::per_term) {
+      std::fill(term.forces_pN.begin(), term.forces_pN.end(), Vec3::Zero());
+      term.energy_pN_um = 0.0;
+    }
+  }
 }
 
 void MembraneModel::add_dissipative_forces(std::span<const Vec3> positions_um,
