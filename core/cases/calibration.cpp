@@ -12,6 +12,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/registry.hpp"
+#include "membrane/hinge.hpp"
 #include "mesh/inspection.hpp"
 
 namespace rbcsim::cases {
@@ -333,6 +334,13 @@ Calibration run_calibration(const mesh::TriangleMesh& cell,
                             const CalibrationSettings& settings) {
   for (const auto& name : settings.fits) {
     find_entry(kFits, name, "calibrate.fits");
+  }
+  // The patch tests fold single hinges and shift every theta0; the vertex form's reference is a
+  // per-vertex offset that neither moves.
+  if (membrane::is_vertex_distribution(parameters.distribution)) {
+    throw InputError("membrane.distribution",
+                     "calibrate's patch tests measure the hinge forms (paper, gradient); the "
+                     "vertex form acts on whole vertex rings and has no two-triangle patch");
   }
   Calibration calibration;
   calibration.settings = settings;

@@ -11,8 +11,11 @@ namespace rbcsim::cases {
 
 CurvatureKinks::CurvatureKinks(const membrane::MembraneModel& model)
     : model_(model),
+      // The vertex form's kinks (sign(M_i) at a flat patch) are not smoothed: it is a
+      // reproduction variant, run in the dynamics (docs/physics.md, "The vertex form").
       active_(std::ranges::find(model.parameters().forces, "total_curvature") !=
-              model.parameters().forces.end()) {}
+                  model.parameters().forces.end() &&
+              !membrane::is_vertex_distribution(model.parameters().distribution)) {}
 
 std::vector<FlatEdge> CurvatureKinks::flat_edges(std::span<const Vec3> positions_um,
                                                  const membrane::MembraneForces& forces) const {

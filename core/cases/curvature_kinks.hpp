@@ -15,7 +15,7 @@
 // 2.5e-3 um at eps = 1e-2 rad and the paper's 0.25 um edges).
 //
 // g_j is the part of the term's edge load that carries sign(theta_j) (docs/physics.md,
-// "The two distributions"): with slope = slope(d_C) and scale = k_c kBT / L0,
+// "The three distributions"): with slope = slope(d_C) and scale = k_c kBT / L0,
 //   `paper`:    F = -scale slope sign(theta_j), pushed as Eqs. 17-18;
 //   `gradient`: dE/dtheta_j = (sqrt 3 / 2) scale slope l_j sign(theta_j);
 // the part |theta_j| dE/dl_j is continuous at theta_j = 0 and stays as computed. A test checks

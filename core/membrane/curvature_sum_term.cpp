@@ -10,6 +10,7 @@
 // `gradient`: E = K energy(d), d a function of every l_j and theta_j:
 //   dE/dtheta_j = K slope(d) l_j w'(theta_j) / (2 |S0|),  dE/dl_j = K slope(d) w(theta_j) / (2
 //   |S0|).
+// `vertex` (vertex_patch.hpp): every vertex pushed with F w'(M_i), M_i its patch offset.
 // Scale of K, so that one element has the paper's stiffness: for an equilateral pair of edge L0
 // (h = (sqrt(3)/2) L0, w' = 1) the gradient pushes a wing with
 // dE/dtheta / h = K slope(d) / (sqrt(3) |S0|), the paper with (k kBT / L0) slope(d), so
@@ -37,26 +38,26 @@ CurvatureSumTerm::CurvatureSumTerm(std::string_view name, Measure measure, doubl
       measure_(measure),
       gradient_scale_pN_(std::sqrt(3.0) * force_scale_pN_) {}
 
-double CurvatureSumTerm::current_sum_um(const CellGeometry& geometry) const {
-  return measure_ == Measure::signed_curvature ? geometry.signed_curvature_sum_um
-                                               : geometry.absolute_curvature_sum_um;
-}
-
-double CurvatureSumTerm::reference_sum_um(const ReferenceState& reference) const {
-  return measure_ == Measure::signed_curvature ? reference.signed_curvature_sum_um
-                                               : reference.absolute_curvature_sum_um;
+double measure_curvature_sum(std::string_view name, CurvatureSumTerm::Measure measure,
+                             const ForceLaw& law, double force_scale_pN,
+                             const TermContext& context, TermForces& out) {
+  const bool absolute = measure == CurvatureSumTerm::Measure::absolute_curvature;
+  const double current_um = absolute ? context.geometry.absolute_curvature_sum_um
+                                     : context.geometry.signed_curvature_sum_um;
+  const double reference_um = absolute ? context.reference.absolute_curvature_sum_um
+                                        : context.reference.signed_curvature_sum_um;
+  const double deviation = (current_um - reference_um) / std::abs(reference_um);
+  require_within_limit(name, "the cell", deviation, law.tau());
+  // K energy(d) with K = sqrt(3) (k kBT / L0) |S0|.
+  out.energy_pN_um = std::sqrt(3.0) * force_scale_pN * std::abs(reference_um) * law.energy(deviation);
+  out.max_abs_deviation = std::abs(deviation);
+  return deviation;
 }
 
 void CurvatureSumTerm::measure(const TermContext& context, TermScratch& scratch,
                                TermForces& out) const {
-  const double reference_um = reference_sum_um(context.reference);
-  const double deviation =
-      (current_sum_um(context.geometry) - reference_um) / std::abs(reference_um);
-  require_within_limit(name_, "the cell", deviation, law_.tau());
-  scratch.cell_deviation = deviation;
-  // K energy(d) with K = gradient_scale |S0|.
-  out.energy_pN_um = gradient_scale_pN_ * std::abs(reference_um) * law_.energy(deviation);
-  out.max_abs_deviation = std::abs(deviation);
+  scratch.cell_deviation =
+      measure_curvature_sum(name_, measure_, law_, force_scale_pN_, context, out);
 }
 
 HingeLoad CurvatureSumTerm::edge_load(const TermContext& context, const TermScratch& scratch,
@@ -73,6 +74,29 @@ HingeLoad CurvatureSumTerm::edge_load(const TermContext& context, const TermScra
           half_gradient_pN * weight_rad};
 }
 
+VertexCurvatureSumTerm::VertexCurvatureSumTerm(std::string_view name,
+                                               CurvatureSumTerm::Measure measure, double k_kBT,
+                                               double tau, const MembraneParameters& parameters)
+    : VertexPatchTerm(ForceLaw::with_linear_term(tau), k_kBT, parameters),
+      name_(name),
+      measure_(measure) {}
+
+void VertexCurvatureSumTerm::measure(const TermContext& context, TermScratch& scratch,
+                                     TermForces& out) const {
+  scratch.cell_deviation =
+      measure_curvature_sum(name_, measure_, law_, force_scale_pN_, context, out);
+}
+
+double VertexCurvatureSumTerm::push_pN(const TermScratch& scratch, std::size_t,
+                                       std::size_t vertex) const {
+  // w'(M_i): C sums |M|, so restoring it flattens convex and concave patches alike.
+  const double offset_um = scratch.deviations[vertex];
+  const double weight_slope = measure_ == CurvatureSumTerm::Measure::absolute_curvature
+                                  ? (offset_um > 0.0) - (offset_um < 0.0)
+                                  : 1.0;
+  return -force_scale_pN_ * law_.slope(scratch.cell_deviation) * weight_slope;
+}
+
 std::unique_ptr<ForceTerm> make_area_difference_term(const MembraneParameters& parameters,
                                                      const ReferenceState& reference) {
   const double ratio =
@@ -85,6 +109,11 @@ std::unique_ptr<ForceTerm> make_area_difference_term(const MembraneParameters& p
                "remove \"area_difference\" from membrane.forces for this shape";
     throw InputError("stress-free mesh", problem.str());
   }
+  if (is_vertex_distribution(parameters.distribution)) {
+    return std::make_unique<VertexCurvatureSumTerm>(
+        "area_difference", CurvatureSumTerm::Measure::signed_curvature,
+        parameters.k_area_difference_kBT, parameters.tau_area_difference, parameters);
+  }
   return std::make_unique<CurvatureSumTerm>(
       "area_difference", CurvatureSumTerm::Measure::signed_curvature,
       parameters.k_area_difference_kBT, parameters.tau_area_difference, parameters,
@@ -93,6 +122,11 @@ std::unique_ptr<ForceTerm> make_area_difference_term(const MembraneParameters& p
 
 std::unique_ptr<ForceTerm> make_total_curvature_term(const MembraneParameters& parameters,
                                                      const ReferenceState&) {
+  if (is_vertex_distribution(parameters.distribution)) {
+    return std::make_unique<VertexCurvatureSumTerm>(
+        "total_curvature", CurvatureSumTerm::Measure::absolute_curvature,
+        parameters.k_total_curvature_kBT, parameters.tau_total_curvature, parameters);
+  }
   return std::make_unique<CurvatureSumTerm>(
       "total_curvature", CurvatureSumTerm::Measure::absolute_curvature,
       parameters.k_total_curvature_kBT, parameters.tau_total_curvature, parameters,

@@ -15,7 +15,10 @@ std::vector<ForceTermEntry> built_in_terms() {
          return std::make_unique<LinkTerm>(p);
        }},
       {"bend",
-       [](const MembraneParameters& p, const ReferenceState&) -> std::unique_ptr<ForceTerm> {
+       [](const MembraneParameters& p, const ReferenceState& r) -> std::unique_ptr<ForceTerm> {
+         if (is_vertex_distribution(p.distribution)) {
+           return std::make_unique<VertexBendingTerm>(p, r);
+         }
          return std::make_unique<BendingTerm>(p, find_hinge_distribution(p.distribution));
        }},
       {"area",

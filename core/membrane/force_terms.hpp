@@ -133,13 +133,69 @@ class CurvatureSumTerm final : public HingeTerm {
   void measure(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
   HingeLoad edge_load(const TermContext& context, const TermScratch& scratch,
                       std::size_t edge) const override;
-  double current_sum_um(const CellGeometry& geometry) const;
-  double reference_sum_um(const ReferenceState& reference) const;  // S0
-
   std::string_view name_;
   Measure measure_;
   double gradient_scale_pN_;  // K / |S0| of the energy, see curvature_sum_term.cpp
 };
+
+// The per-vertex form of the three angle terms (`membrane.distribution = vertex`,
+// vertex_patch.hpp): every vertex gets a push along its patch normal, shared out over its ring.
+class VertexPatchTerm : public LawTerm {
+ public:
+  void evaluate(const TermContext& context, TermScratch& scratch, TermForces& out) const final;
+
+ protected:
+  VertexPatchTerm(ForceLaw law, double k_kBT, const MembraneParameters& parameters)
+      : LawTerm(law, k_kBT, parameters.force_length_scale_um, parameters.thermal_energy_pN_um) {}
+
+ private:
+  // Scratch layout: the patch offsets M_i in deviations[0, V), the normals in
+  // slot_forces_pN[0, V); a term may use deviations[V, 2V) and energies_pN_um[0, V) (the edge
+  // count, their size, is 3V - 6 >= 2V). Checks the limit, fills energy and max |d|.
+  virtual void measure(const TermContext& context, TermScratch& scratch, TermForces& out) const = 0;
+  // The push of `vertex` (of vertex_count), pN.
+  virtual double push_pN(const TermScratch& scratch, std::size_t vertex_count,
+                         std::size_t vertex) const = 0;
+};
+
+// HemoCell 2.x's per-vertex bending: d_i = (M_i - M0_i) / L (L the mean reference edge), push
+// -(k_b kBT / L0) slope(d_i) with HemoCell's limit tau = sqrt(1/2) (its "0.5 - dDev^2"), not
+// tau_bend (an angle). Energy K sum energy(d_i) with K = (k_b kBT / L0) L, so push = -dE/dM_i.
+class VertexBendingTerm final : public VertexPatchTerm {
+ public:
+  VertexBendingTerm(const MembraneParameters& parameters, const ReferenceState& reference);
+  static constexpr double kTau = 0.70710678118654752;  // sqrt(0.5)
+
+ private:
+  void measure(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
+  double push_pN(const TermScratch& scratch, std::size_t vertex_count,
+                 std::size_t vertex) const override;
+
+  double mean_edge_um_;
+};
+
+// The area difference and total curvature in the per-vertex form: the cell's d as in the edge
+// forms (Eqs. 12-14), every vertex pushed with the paper's scalar F = -(k kBT / L0) slope(d)
+// times w'(M_i): 1 for the area difference, sign(M_i) for the total curvature.
+class VertexCurvatureSumTerm final : public VertexPatchTerm {
+ public:
+  VertexCurvatureSumTerm(std::string_view name, CurvatureSumTerm::Measure measure, double k_kBT,
+                         double tau, const MembraneParameters& parameters);
+
+ private:
+  void measure(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
+  double push_pN(const TermScratch& scratch, std::size_t vertex_count,
+                 std::size_t vertex) const override;
+
+  std::string_view name_;
+  CurvatureSumTerm::Measure measure_;
+};
+
+// d = (S - S0)/|S0| of a curvature sum for `measure`, checked against the law's limit (both
+// forms); its energy K energy(d) with K = sqrt(3) (k kBT / L0) |S0| and |d| go into out.
+double measure_curvature_sum(std::string_view name, CurvatureSumTerm::Measure measure,
+                             const ForceLaw& law, double force_scale_pN,
+                             const TermContext& context, TermForces& out);
 
 // Factories of the area difference (guards |DeltaA0| near zero) and total curvature terms.
 std::unique_ptr<ForceTerm> make_area_difference_term(const MembraneParameters& parameters,

@@ -1,6 +1,9 @@
 #include "membrane/hinge.hpp"
 
+#include <algorithm>
 #include <string>
+
+#include "common/errors.hpp"
 
 #include "common/registry.hpp"
 
@@ -67,6 +70,24 @@ std::span<const HingeDistributionEntry> hinge_distribution_table() { return kDis
 
 HingeDistribution find_hinge_distribution(std::string_view name) {
   return find_entry(kDistributions, name, "membrane.distribution").distribute;
+}
+
+std::vector<std::string> distribution_names() {
+  std::vector<std::string> names;
+  for (const auto& entry : kDistributions) names.emplace_back(entry.name);
+  names.emplace_back(kVertexDistributionName);
+  return names;
+}
+
+bool is_vertex_distribution(std::string_view name) { return name == kVertexDistributionName; }
+
+void require_known_distribution(std::string_view name) {
+  const auto names = distribution_names();
+  if (std::find(names.begin(), names.end(), name) != names.end()) return;
+  std::string choices;
+  for (const auto& known : names) choices += (choices.empty() ? "" : ", ") + known;
+  throw InputError("membrane.distribution",
+                   "\"" + std::string(name) + "\" is not one of " + choices);
 }
 
 }  // namespace rbcsim::membrane

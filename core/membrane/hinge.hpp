@@ -65,7 +65,16 @@ struct HingeDistributionEntry {
   HingeDistribution distribute;
 };
 std::span<const HingeDistributionEntry> hinge_distribution_table();
-// Throws InputError naming `membrane.distribution` for an unknown name.
+// Throws InputError naming `membrane.distribution` for an unknown name (the vertex form is not
+// a per-hinge function: check is_vertex_distribution first).
 HingeDistribution find_hinge_distribution(std::string_view name);
+
+// Every form of the angle terms (`membrane.distribution`): the hinge forms of the table above and
+// "vertex", the per-vertex form of vertex_patch.hpp (HemoCell 2.x).
+constexpr std::string_view kVertexDistributionName = "vertex";
+std::vector<std::string> distribution_names();
+bool is_vertex_distribution(std::string_view name);
+// Throws InputError naming `membrane.distribution` for a name that is none of them.
+void require_known_distribution(std::string_view name);
 
 }  // namespace rbcsim::membrane

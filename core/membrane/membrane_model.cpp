@@ -52,7 +52,13 @@ MembraneModel::MembraneModel(const mesh::TriangleMesh& mesh, ReferenceState refe
       parameters_(parameters) {
   require_reference_matches(reference_, topology_);
   require_known_term_names(parameters_.forces);
-  find_hinge_distribution(parameters_.distribution);  // reject an unknown name even if unused
+  require_known_distribution(parameters_.distribution);  // reject an unknown name even if unused
+  if (is_vertex_distribution(parameters_.distribution) &&
+      reference_.vertex_offsets_um.size() != topology_.vertex_count()) {
+    throw std::invalid_argument("membrane reference state has no patch offset per vertex (" +
+                                std::to_string(topology_.vertex_count()) +
+                                " vertices), which the vertex form needs");
+  }
   const auto& kernel = find_membrane_kernel(parameters_.kernel);
   auto enabled = [&](const ForceTermEntry& entry) {
     return std::find(parameters_.forces.begin(), parameters_.forces.end(), entry.name) !=

@@ -65,7 +65,13 @@ Term term_of(std::string_view name) {
 }
 
 // Every distribution of hinge.cpp's table has its fused twin here (the constructor checks).
+// The per-vertex form (a reproduction variant) has no fused twin: it runs on the reference kernel.
 const FusedDistribution& find_fused_distribution(std::string_view name) {
+  if (is_vertex_distribution(name)) {
+    throw InputError("membrane.kernel",
+                     "the optimised kernel fuses the hinge forms (paper, gradient) only; "
+                     "membrane.distribution=vertex needs membrane.kernel=reference");
+  }
   return find_entry(fused_distribution_table(), name, "membrane.distribution");
 }
 

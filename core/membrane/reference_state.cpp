@@ -4,6 +4,7 @@
 
 #include "common/errors.hpp"
 #include "membrane/cell_geometry.hpp"
+#include "membrane/vertex_patch.hpp"
 
 namespace rbcsim::membrane {
 namespace {
@@ -58,6 +59,9 @@ ReferenceState capture_reference_state(std::span<const Vec3> positions_um,
       triangles, geometry.triangle_area_vectors_um2, topology.vertex_count());
   reference.signed_curvature_sum_um = geometry.signed_curvature_sum_um;
   reference.absolute_curvature_sum_um = geometry.absolute_curvature_sum_um;
+  std::vector<Vec3> normals(topology.vertex_count());
+  reference.vertex_offsets_um.resize(topology.vertex_count());
+  measure_vertex_patches(positions_um, triangles, topology, normals, reference.vertex_offsets_um);
   return reference;
 }
 

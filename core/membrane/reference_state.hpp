@@ -27,6 +27,9 @@ struct ReferenceState {
   // (Eqs. 12-14), um. The monolayer thickness D0 cancels in the relative deviations.
   double signed_curvature_sum_um = 0.0;
   double absolute_curvature_sum_um = 0.0;
+  // M0_i per vertex: the offset of each vertex from its ring's centroid along its patch normal
+  // (vertex_patch.hpp), the reference of the per-vertex bending form, um.
+  std::vector<double> vertex_offsets_um;
 };
 
 // Throws InputError (source "stress-free mesh") for a degenerate triangle or a non-positive

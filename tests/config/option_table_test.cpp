@@ -66,7 +66,7 @@ TEST(OptionTable, ChoicesAndRangesOfTheVariants) {
   EXPECT_EQ(table.find("ibm.kernel")->choices, (std::vector<std::string>{"phi2", "phi3", "phi4"}));
   EXPECT_EQ(table.find("lattice.collision")->choices, (std::vector<std::string>{"bgk", "trt"}));
   EXPECT_EQ(table.find("membrane.distribution")->choices,
-            (std::vector<std::string>{"paper", "gradient"}));
+            (std::vector<std::string>{"paper", "gradient", "vertex"}));
   const auto& subdivisions = *table.find("mesh.subdivisions");
   EXPECT_EQ(subdivisions.type, OptionType::integer);
   EXPECT_TRUE(subdivisions.minimum && subdivisions.minimum->value == 1 &&

@@ -34,14 +34,6 @@ MembraneParameters only(const std::vector<std::string>& terms) {
   return parameters;
 }
 
-rbcsim::membrane::MembraneForces compute(const MembraneModel& model,
-                                         const std::vector<Vec3>& positions_um) {
-  auto workspace = model.make_workspace();
-  auto forces = model.make_forces();
-  model.compute(positions_um, workspace, forces);
-  return forces;
-}
-
 TEST(ForceLaw, EnergyIntegratesTheSlopeAndDivergesAtTau) {
   for (const auto& law : {ForceLaw::with_linear_term(0.3), ForceLaw::divergent_only(0.1)}) {
     EXPECT_EQ(law.energy(0.0), 0.0);
@@ -72,7 +64,7 @@ TEST(LinkTerm, OneStretchedEdgeFollowsEquation6Exactly) {
   reference.edge_lengths_um[stretched] /= 1.0 + strain;
   const auto parameters = only({"link"});
   const MembraneModel model(mesh, reference, parameters);
-  const auto forces = compute(model, mesh.positions_um).term("link").forces_pN;
+  const auto forces = shapes::forces_at(model, mesh.positions_um).term("link").forces_pN;
 
   const auto& edge = topology.edges()[stretched];
   const Vec3 unit_axis =
@@ -102,7 +94,7 @@ TEST(VolumeTerm, ScaledSpherePointsInwardWithTheLawsMagnitude) {
   const double eps = 0.01;
   std::vector<Vec3> inflated = mesh.positions_um;
   for (auto& p : inflated) p *= 1.0 + eps;
-  const auto forces = compute(model, inflated);
+  const auto forces = shapes::forces_at(model, inflated);
   const auto& volume_forces = forces.term("volume").forces_pN;
 
   const double d = std::pow(1.0 + eps, 3) - 1.0;
@@ -138,7 +130,7 @@ TEST(TotalAreaTerm, UniformDilationGivesTheHarmonicEnergyAndVirial) {
     for (const double eps : {-0.004, 0.003}) {
       std::vector<Vec3> dilated = mesh.positions_um;
       for (auto& p : dilated) p *= 1.0 + eps;
-      const auto forces = compute(model, dilated);
+      const auto forces = shapes::forces_at(model, dilated);
       const double d = std::pow(1.0 + eps, 2) - 1.0;
       const auto& term = forces.term("total_area");
       EXPECT_NEAR(forces.cell.total_area, d, 1e-13) << kernel;
@@ -167,7 +159,7 @@ TEST(TotalAreaTerm, IsOffByDefaultAndFailsOnANonFiniteArea) {
     auto broken = mesh.positions_um;
     broken[5].x() = std::nan("");
     try {
-      compute(model, broken);
+      shapes::forces_at(model, broken);
       FAIL() << kernel << ": a NaN position passed";
     } catch (const rbcsim::RuntimeFailure& failure) {
       EXPECT_NE(std::string(failure.what()).find("membrane term 'total_area'"), std::string::npos)
@@ -226,9 +218,9 @@ TEST(PaperDistribution, AreaDifferenceCancelsOnEveryClosedMesh) {
   const auto positions = shapes::small_deformation(mesh, 21);
   auto parameters = only({"area_difference"});
   parameters.distribution = "paper";
-  const auto paper = compute(MembraneModel(mesh, parameters), positions);
+  const auto paper = shapes::forces_at(MembraneModel(mesh, parameters), positions);
   parameters.distribution = "gradient";
-  const auto gradient = compute(MembraneModel(mesh, parameters), positions);
+  const auto gradient = shapes::forces_at(MembraneModel(mesh, parameters), positions);
 
   const double d = paper.cell.area_difference;
   const double tau = parameters.tau_area_difference;
@@ -296,7 +288,7 @@ TEST(MembraneModel, DeviationAtTheLimitIsARuntimeFailureNamingTermAndElement) {
     parameters.kernel = std::string(kernel.name);
     const MembraneModel model(mesh, reference, parameters);
     try {
-      compute(model, mesh.positions_um);
+      shapes::forces_at(model, mesh.positions_um);
       FAIL() << "expected a RuntimeFailure from the " << kernel.name << " kernel";
     } catch (const rbcsim::RuntimeFailure& error) {
       const std::string message = error.what();
@@ -313,7 +305,7 @@ TEST(MembraneModel, ForceCapClampsTheTotalAndCountsEveryHit) {
     parameters.vertex_force_cap_pN = 0.05;
     parameters.kernel = std::string(kernel.name);
     const MembraneModel model(mesh, parameters);
-    const auto forces = compute(model, shapes::small_deformation(mesh, 7));
+    const auto forces = shapes::forces_at(model, shapes::small_deformation(mesh, 7));
     std::size_t above = 0;
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
       Vec3 uncapped = Vec3::Zero();
@@ -353,10 +345,10 @@ TEST(MembraneModel, ResultDoesNotDependOnTheThreadCount) {
       parameters.kernel = std::string(kernel.name);
       const MembraneModel model(mesh, parameters);
       omp_set_num_threads(1);
-      const auto serial = compute(model, positions);
+      const auto serial = shapes::forces_at(model, positions);
       for (int thread_count : {2, 3}) {
         omp_set_num_threads(thread_count);
-        const auto parallel = compute(model, positions);
+        const auto parallel = shapes::forces_at(model, positions);
         auto workspace = model.make_workspace();
         auto totals_only = model.make_forces();
         model.compute(positions, workspace, totals_only, rbcsim::membrane::ForceDetail::totals);

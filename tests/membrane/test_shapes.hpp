@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/vec3.hpp"
+#include "membrane/membrane_model.hpp"
 #include "mesh/cell_shapes.hpp"
 #include "mesh/icosphere.hpp"
 #include "mesh/import.hpp"
@@ -19,6 +20,15 @@
 namespace rbcsim::membrane_test {
 
 using mesh::TriangleMesh;
+
+// The model's forces (every term's array too) at positions_um, at rest.
+inline membrane::MembraneForces forces_at(const membrane::MembraneModel& model,
+                                          const std::vector<Vec3>& positions_um) {
+  auto workspace = model.make_workspace();
+  auto forces = model.make_forces();
+  model.compute(positions_um, workspace, forces);
+  return forces;
+}
 
 inline TriangleMesh ellipsoid(int subdivisions, const Vec3& semi_axes_um) {
   auto mesh = mesh::unit_icosphere(subdivisions);

@@ -109,10 +109,11 @@ void add_scales_and_variants(OptionTable& table) {
                    kMembraneDefaults.kernel,
                    "Force kernel: the fused optimised one, or the plain reference it is tested "
                    "against (same forces to round-off).");
-  table.add_choice("membrane.distribution", entry_names(membrane::hinge_distribution_table()),
+  table.add_choice("membrane.distribution", membrane::distribution_names(),
                    kMembraneDefaults.distribution,
                    "Distribution of the angle-based forces: exact energy gradient (conserves "
-                   "angular momentum) or Eqs. 15-18 as printed.");
+                   "angular momentum), Eqs. 15-18 as printed, or vertex (HemoCell 2.x's "
+                   "per-vertex form; needs membrane.kernel=reference).");
   table
       .add_number("membrane.vertex_force_cap_pN", "pN", kMembraneDefaults.vertex_force_cap_pN,
                   "Per-vertex force cap: a safety net only, every trigger is reported.")
