@@ -2,38 +2,49 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <vector>
 
 #include "membrane/force_law.hpp"
 #include "membrane/hinge.hpp"
+#include "membrane/vertex_patch.hpp"
 #include "mesh/geometry.hpp"
 
 namespace rbcsim::cases {
 
 CurvatureKinks::CurvatureKinks(const membrane::MembraneModel& model)
     : model_(model),
-      // The vertex form's kinks (sign(M_i) at a flat patch) are not smoothed: it is a
-      // reproduction variant, run in the dynamics (docs/physics.md, "The vertex form").
       active_(std::ranges::find(model.parameters().forces, "total_curvature") !=
-                  model.parameters().forces.end() &&
-              !membrane::is_vertex_distribution(model.parameters().distribution)) {}
+              model.parameters().forces.end()),
+      vertex_form_(membrane::is_vertex_distribution(model.parameters().distribution)) {
+  const auto& lengths_um = model.reference().edge_lengths_um;
+  const double mean_edge_um = std::accumulate(lengths_um.begin(), lengths_um.end(), 0.0) /
+                              static_cast<double>(lengths_um.size());
+  patch_smoothing_um_ = kCurvatureSmoothing_rad * mean_edge_um / 2.0;
+}
+
+double CurvatureKinks::sign_push_pN(const membrane::MembraneForces& forces) const {
+  const auto& parameters = model_.parameters();
+  const double slope = membrane::ForceLaw::with_linear_term(parameters.tau_total_curvature)
+                           .slope(forces.cell.total_curvature);
+  return -parameters.k_total_curvature_kBT * parameters.thermal_energy_pN_um /
+         parameters.force_length_scale_um * slope;
+}
 
 std::vector<FlatEdge> CurvatureKinks::flat_edges(std::span<const Vec3> positions_um,
                                                  const membrane::MembraneForces& forces) const {
   std::vector<FlatEdge> flat;
-  if (!active_) return flat;
+  if (!active_ || vertex_form_) return flat;
   const auto& parameters = model_.parameters();
-  const double slope = membrane::ForceLaw::with_linear_term(parameters.tau_total_curvature)
-                           .slope(forces.cell.total_curvature);
-  const double scale_pN = parameters.k_total_curvature_kBT * parameters.thermal_energy_pN_um /
-                          parameters.force_length_scale_um;
+  // -scale slope(d_C): the paper's F for sign +1.
+  const double push_pN = sign_push_pN(forces);
   const auto distribute = membrane::find_hinge_distribution(parameters.distribution);
   for (const auto& edge : model_.topology().edges()) {
     const double angle_rad = mesh::signed_dihedral_angle_rad(positions_um, edge);
     if (std::abs(angle_rad) >= kCurvatureSmoothing_rad) continue;
     const auto hinge = membrane::hinge_of(positions_um, edge);
     const double length_um = (hinge.positions_um[1] - hinge.positions_um[0]).norm();
-    const membrane::HingeLoad sign_part{-scale_pN * slope,
-                                        0.5 * std::sqrt(3.0) * scale_pN * slope * length_um, 0.0};
+    const membrane::HingeLoad sign_part{push_pN, -0.5 * std::sqrt(3.0) * push_pN * length_um, 0.0};
     FlatEdge kink{{edge.vertex0, edge.vertex1, edge.wing0, edge.wing1}, {}, angle_rad};
     distribute(hinge, sign_part, kink.sign_force_pN);
     flat.push_back(kink);
@@ -44,6 +55,7 @@ std::vector<FlatEdge> CurvatureKinks::flat_edges(std::span<const Vec3> positions
 void CurvatureKinks::smooth(std::span<const Vec3> positions_um,
                             const membrane::MembraneForces& forces,
                             std::span<Vec3> net_forces_pN) const {
+  if (active_ && vertex_form_) smooth_patches(positions_um, forces, net_forces_pN);
   for (const auto& kink : flat_edges(positions_um, forces)) {
     // sign(0) = 0, as the term itself counts a flat edge.
     const double sign = (kink.angle_rad > 0.0) - (kink.angle_rad < 0.0);
@@ -51,6 +63,27 @@ void CurvatureKinks::smooth(std::span<const Vec3> positions_um,
     for (std::size_t k = 0; k < 4; ++k) {
       net_forces_pN[kink.vertices[k]] += weight_change * kink.sign_force_pN[k];
     }
+  }
+}
+
+void CurvatureKinks::smooth_patches(std::span<const Vec3> positions_um,
+                                    const membrane::MembraneForces& forces,
+                                    std::span<Vec3> net_forces_pN) const {
+  const auto& topology = model_.topology();
+  std::vector<Vec3> normals(topology.vertex_count());
+  std::vector<double> offsets_um(topology.vertex_count());
+  membrane::measure_vertex_patches(positions_um, model_.triangles(), topology, normals,
+                                   offsets_um);
+  const double push_pN = sign_push_pN(forces);
+  for (std::size_t v = 0; v < topology.vertex_count(); ++v) {
+    const double offset_um = offsets_um[v];
+    if (std::abs(offset_um) >= patch_smoothing_um_) continue;
+    const double sign = (offset_um > 0.0) - (offset_um < 0.0);
+    const Vec3 force_pN = (offset_um / patch_smoothing_um_ - sign) * push_pN * normals[v];
+    net_forces_pN[v] += force_pN;
+    const double share = 1.0 / membrane::ring_size(topology, v);
+    membrane::for_each_neighbour(topology, v,
+                                 [&](std::size_t u) { net_forces_pN[u] -= share * force_pN; });
   }
 }
 

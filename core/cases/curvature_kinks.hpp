@@ -58,13 +58,26 @@ class CurvatureKinks {
 
   // Turns net_forces_pN (holding the model's forces at positions_um, plus any external ones)
   // into the forces of the smoothed model: on each flat edge, (theta_j / eps - sign theta_j) g_j
-  // is added. Unchanged when not active.
+  // is added; in the vertex form (membrane/vertex_patch.hpp), on each flat patch
+  // (|M_i| < eps_M), (M_i / eps_M - sign M_i) times the patch's pattern for a push of sign +1.
+  // Unchanged when not active.
   void smooth(std::span<const Vec3> positions_um, const membrane::MembraneForces& forces,
               std::span<Vec3> net_forces_pN) const;
 
+  // The vertex form's width for a patch offset M_i: eps L / 2 with L the mean reference edge
+  // (a patch of edges L whose hinges are bent by theta has M ~ L theta / 2), um.
+  double patch_smoothing_um() const { return patch_smoothing_um_; }
+
  private:
+  void smooth_patches(std::span<const Vec3> positions_um, const membrane::MembraneForces& forces,
+                      std::span<Vec3> net_forces_pN) const;
+  // The term's push for sign +1 at the cell's total-curvature deviation, pN.
+  double sign_push_pN(const membrane::MembraneForces& forces) const;
+
   const membrane::MembraneModel& model_;
   bool active_ = false;
+  bool vertex_form_ = false;
+  double patch_smoothing_um_ = 0.0;
 };
 
 }  // namespace rbcsim::cases

@@ -9,20 +9,6 @@ namespace {
 
 std::size_t index(std::int32_t i) { return static_cast<std::size_t>(i); }
 
-template <class Visit>
-void for_each_neighbour(const mesh::MeshTopology& topology, std::size_t v, const Visit& visit) {
-  const auto& offsets = topology.vertex_edge_offsets();
-  for (auto k = index(offsets[v]); k < index(offsets[v + 1]); ++k) {
-    const auto& edge = topology.edges()[index(topology.vertex_edges()[k])];
-    visit(index(edge.vertex0) == v ? index(edge.vertex1) : index(edge.vertex0));
-  }
-}
-
-double ring_size(const mesh::MeshTopology& topology, std::size_t v) {
-  const auto& offsets = topology.vertex_edge_offsets();
-  return static_cast<double>(offsets[v + 1] - offsets[v]);
-}
-
 }  // namespace
 
 void measure_vertex_patches(std::span<const Vec3> positions_um,

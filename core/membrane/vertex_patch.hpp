@@ -13,6 +13,7 @@
 // paper's form). A positive push raises i above its ring: it makes the patch more convex.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <span>
 
@@ -21,6 +22,24 @@
 #include "mesh/triangle_mesh.hpp"
 
 namespace rbcsim::membrane {
+
+// Calls visit(u) for every ring neighbour u of vertex v.
+template <class Visit>
+void for_each_neighbour(const mesh::MeshTopology& topology, std::size_t v, const Visit& visit) {
+  const auto& offsets = topology.vertex_edge_offsets();
+  for (auto k = static_cast<std::size_t>(offsets[v]); k < static_cast<std::size_t>(offsets[v + 1]);
+       ++k) {
+    const auto& edge = topology.edges()[static_cast<std::size_t>(topology.vertex_edges()[k])];
+    const auto other = static_cast<std::size_t>(edge.vertex0) == v ? edge.vertex1 : edge.vertex0;
+    visit(static_cast<std::size_t>(other));
+  }
+}
+
+// The ring size n_v of vertex v.
+inline double ring_size(const mesh::MeshTopology& topology, std::size_t v) {
+  const auto& offsets = topology.vertex_edge_offsets();
+  return static_cast<double>(offsets[v + 1] - offsets[v]);
+}
 
 // Unit patch normals and offsets M_i (um) of every vertex (spans sized vertex_count()).
 void measure_vertex_patches(std::span<const Vec3> positions_um,

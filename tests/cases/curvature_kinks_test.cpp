@@ -9,6 +9,7 @@
 #include <cmath>
 #include <utility>
 
+#include "membrane/vertex_patch.hpp"
 #include "mesh/geometry.hpp"
 #include "stretch_test_support.hpp"
 
@@ -148,5 +149,53 @@ TEST_P(Distribution, SmoothedForceIsContinuousAcrossAFlatEdge) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Both, Distribution, ::testing::Values("gradient", "paper"));
+
+// The vertex form pushes a patch with sign(M_i) (membrane/vertex_patch.hpp): the model's force
+// jumps where a patch offset crosses zero, the smoothed one does not.
+TEST(VertexFormKinks, SmoothedForceIsContinuousAcrossAFlatPatch) {
+  const auto mesh = rbcsim::cases::testing::evans_fung_discocyte(3);
+  auto parameters = total_curvature_only("vertex");
+  parameters.kernel = "reference";
+  const MembraneModel model(mesh, parameters);
+  const auto setup = stretched_discocyte(model, mesh);
+  const auto& topology = model.topology();
+  const auto n = model.vertex_count();
+  std::vector<Vec3> normals(n);
+  std::vector<double> offsets_um(n);
+  const auto measure = [&](const std::vector<Vec3>& positions) {
+    rbcsim::membrane::measure_vertex_patches(positions, model.triangles(), topology, normals,
+                                             offsets_um);
+  };
+  measure(setup.deformed_um);
+  std::size_t flattest = 0;
+  for (std::size_t v = 1; v < n; ++v) {
+    if (std::abs(offsets_um[v]) < std::abs(offsets_um[flattest])) flattest = v;
+  }
+  const CurvatureKinks kinks(model);
+  auto workspace = model.make_workspace();
+  // Moves the flattest vertex along its normal until its offset is target_um (dM/dx = n, nearly).
+  const auto smoothed_at = [&](double target_um) {
+    auto positions = setup.deformed_um;
+    for (int iteration = 0; iteration < 30; ++iteration) {
+      measure(positions);
+      positions[flattest] += (target_um - offsets_um[flattest]) * normals[flattest];
+    }
+    auto forces = model.make_forces();
+    model.compute(positions, workspace, forces);
+    auto net = forces.total_pN;
+    kinks.smooth(positions, forces, net);
+    return std::pair(forces.total_pN, net);
+  };
+  const auto [model_above, smoothed_above] = smoothed_at(1e-9);
+  const auto [model_below, smoothed_below] = smoothed_at(-1e-9);
+  double model_jump = 0.0;
+  double smoothed_jump = 0.0;
+  for (std::size_t v = 0; v < n; ++v) {
+    model_jump = std::max(model_jump, (model_above[v] - model_below[v]).norm());
+    smoothed_jump = std::max(smoothed_jump, (smoothed_above[v] - smoothed_below[v]).norm());
+  }
+  EXPECT_GT(model_jump, 1e-3);
+  EXPECT_LT(smoothed_jump, 1e-4 * model_jump);
+}
 
 }  // namespace
