@@ -6,6 +6,7 @@
 
 #include "lattice/boundaries.hpp"
 #include "lattice/collision.hpp"
+#include "lattice/d3q19.hpp"
 #include "lattice/lattice_grid.hpp"
 
 #include <array>
@@ -33,16 +34,50 @@ enum class PopulationLayout {
 // that is a multiple of a large power of two (128^3 nodes: exactly 16 MiB) they all fall on the
 // same cache sets and evict each other (measured: 128^3 ran at 30-32 MLUPS on one core, 130^3 at
 // 70-72; docs/performance.md). With an odd number of lines the 19 arrays take distinct sets.
-std::size_t population_stride(std::size_t node_count);
+std::size_t population_stride(std::size_t node_count, std::size_t bytes_per_value = sizeof(double));
+
+// How the populations are stored (`lattice.precision`). Single precision halves the bytes a step
+// moves and stores f_i - w_i, the deviation from the equilibrium at rest (the "shifted
+// equilibrium" of Skordos 1993 and of waLBerla's and OpenLB's float kernels): f_i itself is w_i
+// plus a deviation of order u and rho - 1, and a float of f_i would lose that deviation's digits
+// to w_i's. Every kernel computes in double; only the storage is single.
+enum class Precision { double_precision, single_precision };
+
+// The names of `lattice.precision`: "double", "single". find_precision throws InputError naming
+// the key for any other.
+struct PrecisionEntry {
+  std::string_view name;
+  Precision precision;
+};
+std::span<const PrecisionEntry> precisions();
+Precision find_precision(std::string_view name);
 
 struct FluidArrays {
-  explicit FluidArrays(std::size_t node_count);
+  explicit FluidArrays(std::size_t node_count, Precision storage = Precision::double_precision);
 
-  // Structure of arrays: population i of node n at populations[i * population_stride + n]. The
-  // padding after each array's node_count values is never read.
+  // Structure of arrays: population i of node n at populations[i * population_stride + n] (double
+  // precision) or single_populations[...] = f_i - w_i (single). The padding after each array's
+  // node_count values is never read. Slots i and opp(i) have the same weight, so the shift of a
+  // slot does not depend on the layout.
   std::size_t population_stride;
+  Precision precision;
   std::vector<double> populations;
+  std::vector<float> single_populations;
   PopulationLayout layout = PopulationLayout::natural;
+  bool single() const { return precision == Precision::single_precision; }
+  // The population in slot `index` (= i * population_stride + node) of direction i, and its
+  // replacement, in either storage.
+  double population(int i, std::size_t index) const {
+    return single() ? static_cast<double>(single_populations[index]) + kWeights[i]
+                    : populations[index];
+  }
+  void set_population(int i, std::size_t index, double value) {
+    if (single()) {
+      single_populations[index] = static_cast<float>(value - kWeights[i]);
+    } else {
+      populations[index] = value;
+    }
+  }
   // Density and velocity u = (sum_i f_i c_i + F/2) / rho of the latest collision at each fluid
   // node (Guo et al. 2002); F is the force density of that step (field plus body force).
   std::vector<double> density;
@@ -104,6 +139,11 @@ std::unique_ptr<FluidKernel> make_fluid_kernel(std::string_view name, const Latt
 // [i * node_count + n] (the layout of checkpoints and of the solver's interface), and back.
 std::vector<double> packed_populations(const FluidArrays& arrays);
 void unpack_populations(std::span<const double> packed, FluidArrays& arrays);
+
+// The populations as stored (packed; in single precision the floats f_i - w_i, exactly), and
+// back: what a checkpoint keeps, so that a resumed run is bit-identical in either precision.
+std::vector<double> stored_populations(const FluidArrays& arrays);
+void restore_stored_populations(std::span<const double> stored, FluidArrays& arrays);
 
 // The pre-collision populations in natural layout, packed, whichever layout `arrays` holds.
 // `time` is the number of steps completed (it sets the Lees-Edwards offset of a pending stream).

@@ -17,8 +17,14 @@ FluidSolver::FluidSolver(LatticeGrid grid, FluidParameters parameters)
              &find_wall_rule(parameters.wall_rule)},
       parameters_(std::move(parameters)),
       rates_(lattice::relaxation_rates(parameters_.collision, parameters_.collision_parameters)),
-      arrays_(grid.node_count()) {
+      arrays_(grid.node_count(), parameters_.precision) {
   find_fluid_kernel(parameters_.kernel);
+  if (arrays_.single() && parameters_.kernel != "optimised") {
+    throw InputError("lattice.precision",
+                     "single precision is a storage of the optimised kernel; set "
+                     "lattice.kernel=optimised (the reference kernel is the double-precision "
+                     "definition it is tested against)");
+  }
   if (parameters_.inner_viscosity_ratio != 1.0) {
     class_rates_ = viscosity_class_rates(parameters_.collision, parameters_.collision_parameters,
                                          parameters_.inner_viscosity_ratio);
@@ -111,7 +117,8 @@ void FluidSolver::initialise_equilibrium(const std::vector<double>& density,
     }
     const std::array<double, 3> u = {velocity[0][node], velocity[1][node], velocity[2][node]};
     for (int i = 0; i < kDirections; ++i) {
-      arrays_.populations[i * arrays_.population_stride + node] = equilibrium(i, density[node], u);
+      arrays_.set_population(i, i * arrays_.population_stride + node,
+                             equilibrium(i, density[node], u));
     }
     arrays_.density[node] = density[node];
     for (int axis = 0; axis < 3; ++axis) {
@@ -289,7 +296,7 @@ void FluidSolver::pre_collision_moments(std::span<const std::size_t> nodes,
     double mass = 0.0;
     Vec3 sum = Vec3::Zero();
     for (int i = 0; i < kDirections; ++i) {
-      const double f = arrays_.populations[static_cast<std::size_t>(i) * stride + nodes[k]];
+      const double f = arrays_.population(i, static_cast<std::size_t>(i) * stride + nodes[k]);
       const auto& c = kVelocities[i];
       mass += f;
       sum += f * Vec3(c[0], c[1], c[2]);
@@ -309,8 +316,11 @@ void FluidSolver::add_momentum(std::span<const std::size_t> nodes, std::span<con
     const Vec3& p = momentum[k];
     for (int i = 1; i < kDirections; ++i) {
       const auto& c = kVelocities[i];
-      arrays_.populations[static_cast<std::size_t>(i) * stride + node] +=
-          kInverseSoundSpeedSquared * kWeights[i] * (c[0] * p.x() + c[1] * p.y() + c[2] * p.z());
+      const std::size_t slot = static_cast<std::size_t>(i) * stride + node;
+      arrays_.set_population(i, slot,
+                             arrays_.population(i, slot) + kInverseSoundSpeedSquared * kWeights[i] *
+                                                               (c[0] * p.x() + c[1] * p.y() +
+                                                                c[2] * p.z()));
     }
     for (int axis = 0; axis < 3; ++axis) {
       arrays_.velocity[axis][node] += p[axis] / arrays_.density[node];
@@ -335,7 +345,7 @@ double FluidSolver::total_mass() const {
         continue;
       }
       for (int i = 0; i < kDirections; ++i) {
-        mass += arrays_.populations[i * arrays_.population_stride + node];
+        mass += arrays_.population(i, i * arrays_.population_stride + node);
       }
     }
     row_mass[row] = mass;
@@ -369,7 +379,7 @@ PopulationLayout population_layout_from(StateArchive& archive) {
 // differently from the kernel's own next step at Lees-Edwards and wall links, and the resumed run
 // would agree only to rounding.
 void FluidSolver::save_state(StateArchive& archive) const {
-  archive.put("fluid.populations", packed_populations(arrays_));
+  archive.put("fluid.populations", stored_populations(arrays_));
   archive.put("fluid.layout", {arrays_.layout == PopulationLayout::swapped ? 1.0 : 0.0});
   archive.put("fluid.density", arrays_.density);
   for (int axis = 0; axis < 3; ++axis) {
@@ -380,7 +390,7 @@ void FluidSolver::save_state(StateArchive& archive) const {
 
 void FluidSolver::restore_state(StateArchive& archive) {
   const std::size_t node_count = grid().node_count();
-  unpack_populations(archive.take("fluid.populations", kDirections * node_count), arrays_);
+  restore_stored_populations(archive.take("fluid.populations", kDirections * node_count), arrays_);
   arrays_.layout = population_layout_from(archive);
   arrays_.density = archive.take("fluid.density", node_count);
   for (int axis = 0; axis < 3; ++axis) {

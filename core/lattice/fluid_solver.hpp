@@ -60,6 +60,9 @@ struct FluidParameters {
   // every node a viscosity class, 0 (the outer fluid) until set through viscosity_classes(); 1:
   // one viscosity everywhere, no classes, the uniform kernels.
   double inner_viscosity_ratio = 1.0;
+  // Population storage (`lattice.precision`, fluid_kernel.hpp): single precision needs the
+  // optimised kernel.
+  Precision precision = Precision::double_precision;
 };
 
 struct SteadyStateCriterion {

@@ -60,6 +60,24 @@ struct Moments {
   double uz;
 };
 
+// Loads and stores of one population in either storage (fluid_kernel.hpp, Precision): a double
+// as it is, a float as f - w with w the weight of the population's direction (a slot and its
+// opposite share it). The kernels compute in double either way.
+template <class Real>
+struct Storage;
+template <>
+struct Storage<double> {
+  static double load(double value, double) { return value; }
+  static double store(double f, double) { return f; }
+  static double* data(FluidArrays& arrays) { return arrays.populations.data(); }
+};
+template <>
+struct Storage<float> {
+  static double load(float value, double weight) { return static_cast<double>(value) + weight; }
+  static float store(double f, double weight) { return static_cast<float>(f - weight); }
+  static float* data(FluidArrays& arrays) { return arrays.single_populations.data(); }
+};
+
 // TRT relaxation of one pair of opposite populations, `along` c and `against` it, with
 // cu = c.u, cf = c.F, base = 1 - u.u/(2 c_s^2), three_uf = u.F / c_s^2. Same operator as
 // collide_node_reference, written for the pair at once.
@@ -114,30 +132,34 @@ struct Moments {
 // and written by one node only, so iterations are independent: `ivdep` says so to the vectoriser
 // (GCC 12 does not vectorise this loop under `omp simd`, which privatises the array f into a simd
 // array it cannot load from).
-template <bool kForceField>
-RBCSIM_VECTOR_CLONES void collide_run(double* const (&p)[kDirections], std::size_t first,
+template <bool kForceField, class Real>
+RBCSIM_VECTOR_CLONES void collide_run(Real* const (&p)[kDirections], std::size_t first,
                                       std::ptrdiff_t length, FluidArrays& arrays,
                                       const std::array<double, 3>& body_force,
                                       const TrtConstants& k) {
-  double* const p0 = p[0];
-  double* const p1 = p[1];
-  double* const p2 = p[2];
-  double* const p3 = p[3];
-  double* const p4 = p[4];
-  double* const p5 = p[5];
-  double* const p6 = p[6];
-  double* const p7 = p[7];
-  double* const p8 = p[8];
-  double* const p9 = p[9];
-  double* const p10 = p[10];
-  double* const p11 = p[11];
-  double* const p12 = p[12];
-  double* const p13 = p[13];
-  double* const p14 = p[14];
-  double* const p15 = p[15];
-  double* const p16 = p[16];
-  double* const p17 = p[17];
-  double* const p18 = p[18];
+  using S = Storage<Real>;
+  constexpr double w0 = kWeightRest;
+  constexpr double wf = kWeightFace;
+  constexpr double we = kWeightEdge;
+  Real* const p0 = p[0];
+  Real* const p1 = p[1];
+  Real* const p2 = p[2];
+  Real* const p3 = p[3];
+  Real* const p4 = p[4];
+  Real* const p5 = p[5];
+  Real* const p6 = p[6];
+  Real* const p7 = p[7];
+  Real* const p8 = p[8];
+  Real* const p9 = p[9];
+  Real* const p10 = p[10];
+  Real* const p11 = p[11];
+  Real* const p12 = p[12];
+  Real* const p13 = p[13];
+  Real* const p14 = p[14];
+  Real* const p15 = p[15];
+  Real* const p16 = p[16];
+  Real* const p17 = p[17];
+  Real* const p18 = p[18];
   double* const density = arrays.density.data() + first;
   double* const ux = arrays.velocity[0].data() + first;
   double* const uy = arrays.velocity[1].data() + first;
@@ -151,9 +173,13 @@ RBCSIM_VECTOR_CLONES void collide_run(double* const (&p)[kDirections], std::size
 
   RBCSIM_NO_LOOP_CARRIED_ALIASING
   for (std::ptrdiff_t n = 0; n < length; ++n) {
-    double f[kDirections] = {p0[n],  p1[n],  p2[n],  p3[n],  p4[n],  p5[n],  p6[n],
-                             p7[n],  p8[n],  p9[n],  p10[n], p11[n], p12[n], p13[n],
-                             p14[n], p15[n], p16[n], p17[n], p18[n]};
+    double f[kDirections] = {S::load(p0[n], w0),  S::load(p1[n], wf),  S::load(p2[n], wf),
+                             S::load(p3[n], wf),  S::load(p4[n], wf),  S::load(p5[n], wf),
+                             S::load(p6[n], wf),  S::load(p7[n], we),  S::load(p8[n], we),
+                             S::load(p9[n], we),  S::load(p10[n], we), S::load(p11[n], we),
+                             S::load(p12[n], we), S::load(p13[n], we), S::load(p14[n], we),
+                             S::load(p15[n], we), S::load(p16[n], we), S::load(p17[n], we),
+                             S::load(p18[n], we)};
     double fx = body_x;
     double fy = body_y;
     double fz = body_z;
@@ -167,25 +193,25 @@ RBCSIM_VECTOR_CLONES void collide_run(double* const (&p)[kDirections], std::size
     ux[n] = moments.ux;
     uy[n] = moments.uy;
     uz[n] = moments.uz;
-    p0[n] = f[0];
-    p2[n] = f[1];
-    p1[n] = f[2];
-    p4[n] = f[3];
-    p3[n] = f[4];
-    p6[n] = f[5];
-    p5[n] = f[6];
-    p8[n] = f[7];
-    p7[n] = f[8];
-    p10[n] = f[9];
-    p9[n] = f[10];
-    p12[n] = f[11];
-    p11[n] = f[12];
-    p14[n] = f[13];
-    p13[n] = f[14];
-    p16[n] = f[15];
-    p15[n] = f[16];
-    p18[n] = f[17];
-    p17[n] = f[18];
+    p0[n] = S::store(f[0], w0);
+    p2[n] = S::store(f[1], wf);
+    p1[n] = S::store(f[2], wf);
+    p4[n] = S::store(f[3], wf);
+    p3[n] = S::store(f[4], wf);
+    p6[n] = S::store(f[5], wf);
+    p5[n] = S::store(f[6], wf);
+    p8[n] = S::store(f[7], we);
+    p7[n] = S::store(f[8], we);
+    p10[n] = S::store(f[9], we);
+    p9[n] = S::store(f[10], we);
+    p12[n] = S::store(f[11], we);
+    p11[n] = S::store(f[12], we);
+    p14[n] = S::store(f[13], we);
+    p13[n] = S::store(f[14], we);
+    p16[n] = S::store(f[15], we);
+    p15[n] = S::store(f[16], we);
+    p18[n] = S::store(f[17], we);
+    p17[n] = S::store(f[18], we);
   }
 }
 
@@ -194,8 +220,8 @@ RBCSIM_VECTOR_CLONES void collide_run(double* const (&p)[kDirections], std::size
 // stretches; only the few nodes of a cell's rim change class from node to node. (Looking the
 // constants up per node inside the loop kept it from vectorising: the 40x40x20 bench's fluid
 // phase took 2.4x as long.) With kPerNodeRates false, plainly collide_run at `k`.
-template <bool kForceField, bool kPerNodeRates>
-void collide_run_at_rates(double* const (&p)[kDirections], std::size_t first, std::ptrdiff_t length,
+template <bool kForceField, bool kPerNodeRates, class Real>
+void collide_run_at_rates(Real* const (&p)[kDirections], std::size_t first, std::ptrdiff_t length,
                           FluidArrays& arrays, const std::array<double, 3>& body_force,
                           const TrtConstants& k, const ClassConstants& node_rates) {
   if constexpr (!kPerNodeRates) {
@@ -206,7 +232,7 @@ void collide_run_at_rates(double* const (&p)[kDirections], std::size_t first, st
     while (begin < length) {
       std::ptrdiff_t end = begin + 1;
       while (end < length && classes[end] == classes[begin]) ++end;
-      double* stretch[kDirections];
+      Real* stretch[kDirections];
       for (int i = 0; i < kDirections; ++i) stretch[i] = p[i] + begin;
       collide_run<kForceField>(stretch, first + begin, end - begin, arrays, body_force,
                                node_rates.constants[classes[begin]]);
@@ -230,11 +256,12 @@ struct LinkBuffers {
 
 // The streaming step of one node with boundary links: gather through each link, collide, scatter
 // through each link (the write of f*_i goes through link opp(i), whose source is x + c_i).
-template <bool kForceField, bool kPerNodeRates>
+template <bool kForceField, bool kPerNodeRates, class Real>
 void collide_linked_node(const LinkedNode& linked, std::size_t stride, FluidArrays& arrays,
                          const LinkBuffers& buffers, const std::array<double, 3>& body_force,
                          const TrtConstants& k, const ClassConstants& node_rates) {
-  double* const populations = arrays.populations.data();
+  using S = Storage<Real>;
+  Real* const populations = S::data(arrays);
   const std::size_t node = linked.node;
   const double old_density = arrays.density[node];
   const std::array<double, 3> old_velocity = {arrays.velocity[0][node], arrays.velocity[1][node],
@@ -243,13 +270,15 @@ void collide_linked_node(const LinkedNode& linked, std::size_t stride, FluidArra
   for (int i = 0; i < kDirections; ++i) {
     switch (static_cast<LinkKind>(linked.kind[i])) {
       case LinkKind::fluid:
-        f[i] = populations[kOpposite[i] * stride + linked.source[i]];
+        f[i] = S::load(populations[kOpposite[i] * stride + linked.source[i]], kWeights[i]);
         break;
       case LinkKind::wall:
-        f[i] = bounce_back(populations[i * stride + node], old_density, linked.value[i]);
+        f[i] = bounce_back(S::load(populations[i * stride + node], kWeights[i]), old_density,
+                           linked.value[i]);
         break;
       case LinkKind::pressure_outlet:
-        f[i] = anti_bounce_back(i, populations[i * stride + node], linked.value[i], old_velocity);
+        f[i] = anti_bounce_back(i, S::load(populations[i * stride + node], kWeights[i]),
+                                linked.value[i], old_velocity);
         break;
       case LinkKind::lees_edwards:
         f[i] = buffers.ghost_in[linked.source[i]];
@@ -259,7 +288,7 @@ void collide_linked_node(const LinkedNode& linked, std::size_t stride, FluidArra
         const InterpolatedLink& link = buffers.interpolated_links[linked.source[i]];
         f[i] = buffers.wall_local_parts[linked.source[i]];
         if (link.weights.behind != 0.0) {
-          f[i] += link.weights.behind * populations[i * stride + link.behind];
+          f[i] += link.weights.behind * S::load(populations[i * stride + link.behind], kWeights[i]);
         }
         break;
       }
@@ -282,13 +311,15 @@ void collide_linked_node(const LinkedNode& linked, std::size_t stride, FluidArra
     const int o = kOpposite[i];
     switch (static_cast<LinkKind>(linked.kind[o])) {
       case LinkKind::fluid:
-        populations[i * stride + linked.source[o]] = f[i];
+        populations[i * stride + linked.source[o]] = S::store(f[i], kWeights[i]);
         break;
       case LinkKind::wall:
-        populations[o * stride + node] = bounce_back(f[i], moments.density, linked.value[o]);
+        populations[o * stride + node] =
+            S::store(bounce_back(f[i], moments.density, linked.value[o]), kWeights[i]);
         break;
       case LinkKind::pressure_outlet:
-        populations[o * stride + node] = anti_bounce_back(o, f[i], linked.value[o], velocity);
+        populations[o * stride + node] =
+            S::store(anti_bounce_back(o, f[i], linked.value[o], velocity), kWeights[i]);
         break;
       case LinkKind::lees_edwards:
         buffers.ghost_out[linked.source[o]] = f[i];
@@ -296,8 +327,9 @@ void collide_linked_node(const LinkedNode& linked, std::size_t stride, FluidArra
       case LinkKind::interpolated_wall: {
         // The part behind follows in add_wall_parts_behind.
         const InterpolatedLink& link = buffers.interpolated_links[linked.source[o]];
-        populations[o * stride + node] =
-            wall_link_local_part(link.weights, f[i], f[o], moments.density, link.wall_coefficient);
+        populations[o * stride + node] = S::store(
+            wall_link_local_part(link.weights, f[i], f[o], moments.density, link.wall_coefficient),
+            kWeights[i]);
         break;
       }
     }
@@ -446,34 +478,37 @@ OptimisedKernel::OptimisedKernel(const LatticeSetup& setup)
 }
 
 void OptimisedKernel::step(FluidArrays& arrays, const StepParameters& parameters) {
-  if (parameters.viscosity_classes != nullptr) {
-    step_with<true>(arrays, parameters);
+  const bool per_node = parameters.viscosity_classes != nullptr;
+  if (arrays.single()) {
+    per_node ? step_with<true, float>(arrays, parameters)
+             : step_with<false, float>(arrays, parameters);
   } else {
-    step_with<false>(arrays, parameters);
+    per_node ? step_with<true, double>(arrays, parameters)
+             : step_with<false, double>(arrays, parameters);
   }
 }
 
-template <bool kPerNodeRates>
+template <bool kPerNodeRates, class Real>
 void OptimisedKernel::step_with(FluidArrays& arrays, const StepParameters& parameters) {
   const bool local = arrays.layout == PopulationLayout::natural;
   if (local && parameters.force_field_active) {
-    local_step<true, kPerNodeRates>(arrays, parameters);
+    local_step<true, kPerNodeRates, Real>(arrays, parameters);
   } else if (local) {
-    local_step<false, kPerNodeRates>(arrays, parameters);
+    local_step<false, kPerNodeRates, Real>(arrays, parameters);
   } else if (parameters.force_field_active) {
-    streaming_step<true, kPerNodeRates>(arrays, parameters);
+    streaming_step<true, kPerNodeRates, Real>(arrays, parameters);
   } else {
-    streaming_step<false, kPerNodeRates>(arrays, parameters);
+    streaming_step<false, kPerNodeRates, Real>(arrays, parameters);
   }
 }
 
-template <bool kForceField, bool kPerNodeRates>
+template <bool kForceField, bool kPerNodeRates, class Real>
 void OptimisedKernel::local_step(FluidArrays& arrays, const StepParameters& parameters) const {
   const LatticeGrid& grid = setup_.grid;
   const std::size_t stride = arrays.population_stride;
   const TrtConstants constants(parameters.rates);
   const ClassConstants node_rates(parameters);
-  double* const populations = arrays.populations.data();
+  Real* const populations = Storage<Real>::data(arrays);
   const auto rows = static_cast<std::int64_t>(grid.row_count());
 #pragma omp parallel for schedule(static) if (grid.worth_threads())
   for (std::int64_t row = 0; row < rows; ++row) {
@@ -481,7 +516,7 @@ void OptimisedKernel::local_step(FluidArrays& arrays, const StepParameters& para
     for (std::size_t r = fluid_run_begin_[row]; r < fluid_run_begin_[row + 1]; ++r) {
       const Run run = fluid_runs_[r];
       const std::size_t first = row_start + run.x_begin;
-      double* p[kDirections];
+      Real* p[kDirections];
       for (int i = 0; i < kDirections; ++i) {
         p[i] = populations + i * stride + first;
       }
@@ -492,13 +527,13 @@ void OptimisedKernel::local_step(FluidArrays& arrays, const StepParameters& para
   arrays.layout = PopulationLayout::swapped;
 }
 
-template <bool kForceField, bool kPerNodeRates>
+template <bool kForceField, bool kPerNodeRates, class Real>
 void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& parameters) {
   const LatticeGrid& grid = setup_.grid;
   const std::size_t stride = arrays.population_stride;
   const TrtConstants constants(parameters.rates);
   const ClassConstants node_rates(parameters);
-  double* const populations = arrays.populations.data();
+  Real* const populations = Storage<Real>::data(arrays);
   if (setup_.lees_edwards_velocity) {
     fill_lees_edwards_ghosts(arrays, parameters.time);
   }
@@ -513,7 +548,7 @@ void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& 
     const std::size_t row_start = static_cast<std::size_t>(row) * grid.nx();
     for (std::size_t r = bulk_run_begin_[row]; r < bulk_run_begin_[row + 1]; ++r) {
       const Run run = bulk_runs_[r];
-      double* p[kDirections];
+      Real* p[kDirections];
       for (int i = 0; i < kDirections; ++i) {
         const auto& c = kVelocities[i];
         p[i] = populations + kOpposite[i] * stride +
@@ -526,7 +561,7 @@ void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& 
           constants, node_rates);
     }
     for (std::size_t l = linked_begin_[row]; l < linked_begin_[row + 1]; ++l) {
-      collide_linked_node<kForceField, kPerNodeRates>(linked_nodes_[l], stride, arrays, buffers,
+      collide_linked_node<kForceField, kPerNodeRates, Real>(linked_nodes_[l], stride, arrays, buffers,
                                                       parameters.body_force, constants, node_rates);
     }
   }
@@ -544,15 +579,16 @@ void OptimisedKernel::store_wall_local_parts(const FluidArrays& arrays) {
     return;  // no fork-join for nothing
   }
   const std::size_t stride = arrays.population_stride;
-  const double* const populations = arrays.populations.data();
   const auto count = static_cast<std::int64_t>(interpolated_links_.size());
 #pragma omp parallel for schedule(static) if (setup_.grid.worth_threads())
   for (std::int64_t l = 0; l < count; ++l) {
     const InterpolatedLink& link = interpolated_links_[l];
     const int i = link.direction;
-    wall_local_parts_[l] = wall_link_local_part(link.weights, populations[i * stride + link.node],
-                                                populations[kOpposite[i] * stride + link.node],
-                                                arrays.density[link.node], link.wall_coefficient);
+    const int o = kOpposite[i];
+    wall_local_parts_[l] = wall_link_local_part(
+        link.weights, arrays.population(i, i * stride + link.node),
+        arrays.population(o, o * stride + link.node), arrays.density[link.node],
+        link.wall_coefficient);
   }
 }
 
@@ -563,15 +599,17 @@ void OptimisedKernel::add_wall_parts_behind(FluidArrays& arrays) const {
     return;  // no fork-join for nothing
   }
   const std::size_t stride = arrays.population_stride;
-  double* const populations = arrays.populations.data();
   const auto count = static_cast<std::int64_t>(interpolated_links_.size());
 #pragma omp parallel for schedule(static) if (setup_.grid.worth_threads())
   for (std::int64_t l = 0; l < count; ++l) {
     const InterpolatedLink& link = interpolated_links_[l];
     const int i = link.direction;
+    const int o = kOpposite[i];
     if (link.weights.behind != 0.0) {
-      populations[i * stride + link.node] +=
-          link.weights.behind * populations[kOpposite[i] * stride + link.node];
+      const std::size_t slot = i * stride + link.node;
+      arrays.set_population(i, slot,
+                            arrays.population(i, slot) +
+                                link.weights.behind * arrays.population(o, o * stride + link.node));
     }
   }
 }
@@ -583,7 +621,9 @@ void OptimisedKernel::fill_lees_edwards_ghosts(const FluidArrays& arrays,
   for_each_lees_edwards_population(
       setup_, arrays, arrival_time,
       // After the local step, f*_i of a node sits in its slot opp(i).
-      [&](int i, std::size_t source) { return arrays.populations[kOpposite[i] * stride + source]; },
+      [&](int i, std::size_t source) {
+        return arrays.population(kOpposite[i], kOpposite[i] * stride + source);
+      },
       [&](int i, std::size_t, int x, int z, double value) {
         ghost_in_[i * plane_size_ + x + nx * z] = value;
       });
@@ -600,7 +640,7 @@ void OptimisedKernel::empty_lees_edwards_ghosts(FluidArrays& arrays,
         return ghost_out_[kOpposite[i] * plane_size_ + source % nx + nx * (source / layer)];
       },
       [&](int i, std::size_t target, int, int, double value) {
-        arrays.populations[i * stride + target] = value;
+        arrays.set_population(i, i * stride + target, value);
       });
 }
 

@@ -68,12 +68,13 @@ class OptimisedKernel final : public FluidKernel {
   };
 
  private:
-  // kPerNodeRates: every node relaxes at the rates of its viscosity class (collision.hpp).
-  template <bool kPerNodeRates>
+  // kPerNodeRates: every node relaxes at the rates of its viscosity class (collision.hpp). Real:
+  // the population storage, double or float (fluid_kernel.hpp, Precision).
+  template <bool kPerNodeRates, class Real>
   void step_with(FluidArrays& arrays, const StepParameters& parameters);
-  template <bool kForceField, bool kPerNodeRates>
+  template <bool kForceField, bool kPerNodeRates, class Real>
   void local_step(FluidArrays& arrays, const StepParameters& parameters) const;
-  template <bool kForceField, bool kPerNodeRates>
+  template <bool kForceField, bool kPerNodeRates, class Real>
   void streaming_step(FluidArrays& arrays, const StepParameters& parameters);
   void store_wall_local_parts(const FluidArrays& arrays);
   void add_wall_parts_behind(FluidArrays& arrays) const;

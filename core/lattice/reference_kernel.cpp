@@ -105,9 +105,8 @@ void collide_reference(const LatticeSetup& setup, FluidArrays& arrays,
 
 void stream_reference(const LatticeSetup& setup, const FluidArrays& arrays,
                       const std::vector<double>& post, std::vector<double>& pre,
-                      std::size_t arrival_time) {
+                      std::size_t arrival_time, std::size_t stride) {
   const LatticeGrid& grid = setup.grid;
-  const std::size_t stride = arrays.population_stride;
   const bool sliding = setup.lees_edwards_velocity.has_value();
   const double velocity_difference = setup.lees_edwards_velocity.value_or(0.0);
   const auto planes = lees_edwards_planes(
@@ -167,8 +166,12 @@ void ReferenceKernel::step(FluidArrays& arrays, const StepParameters& parameters
   if (arrays.layout != PopulationLayout::natural) {
     throw std::logic_error("lattice: the reference kernel needs populations in natural layout");
   }
+  if (arrays.single()) {
+    throw std::logic_error("lattice: the reference kernel stores populations in double only");
+  }
   collide_reference(setup_, arrays, parameters);
-  stream_reference(setup_, arrays, arrays.populations, streamed_, parameters.time + 1);
+  stream_reference(setup_, arrays, arrays.populations, streamed_, parameters.time + 1,
+                   arrays.population_stride);
   arrays.populations.swap(streamed_);
 }
 

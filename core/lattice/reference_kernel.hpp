@@ -26,13 +26,13 @@ void collide_node_reference(std::array<double, kDirections>& f, const std::array
 void collide_reference(const LatticeSetup& setup, FluidArrays& arrays,
                        const StepParameters& parameters);
 
-// Streaming of the post-collision populations `post` (natural layout, laid out as
-// arrays.populations) into the pre-collision populations `pre` of the fluid nodes, with every
-// boundary rule. `arrays` supplies the density and velocity of the collision that produced
+// Streaming of the post-collision populations `post` (natural layout, population i of node n at
+// [i * stride + n]) into the pre-collision populations `pre` of the fluid nodes (same layout), with
+// every boundary rule. `arrays` supplies the density and velocity of the collision that produced
 // `post`; `arrival_time` sets the Lees-Edwards offset.
 void stream_reference(const LatticeSetup& setup, const FluidArrays& arrays,
                       const std::vector<double>& post, std::vector<double>& pre,
-                      std::size_t arrival_time);
+                      std::size_t arrival_time, std::size_t stride);
 
 class ReferenceKernel final : public FluidKernel {
  public:

@@ -21,6 +21,7 @@ lattice::FluidParameters fluid_parameters_from(const config::Config& config) {
   parameters.collision_parameters.magic_parameter = config.number("lattice.trt_magic");
   parameters.wall_rule = config.string("lattice.wall_rule");
   parameters.kernel = config.string("lattice.kernel");
+  parameters.precision = lattice::find_precision(config.string("lattice.precision"));
   // A ratio of viscosities, unchanged when a case scales the plasma's viscosity down (shear's
   // viscosity_scaling, capillary's time_scale_compression): both fluids scale alike.
   parameters.inner_viscosity_ratio = config.number("physics.cytoplasm_viscosity_ratio");

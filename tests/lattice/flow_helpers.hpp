@@ -43,4 +43,18 @@ inline double relative_l2_error_x(const FluidSolver& solver,
   return std::sqrt(error_squared / norm_squared);
 }
 
+// Projection of u_x onto the Taylor-Green vortex mode -cos kx sin ky.
+inline double vortex_amplitude(const FluidSolver& solver, double wavenumber) {
+  const LatticeGrid& grid = solver.grid();
+  double projection = 0.0;
+  double norm = 0.0;
+  for (std::size_t node = 0; node < grid.node_count(); ++node) {
+    const auto [x, y, z] = grid.coordinates(node);
+    const double mode = -std::cos(wavenumber * x) * std::sin(wavenumber * y);
+    projection += solver.velocity()[0][node] * mode;
+    norm += mode * mode;
+  }
+  return projection / norm;
+}
+
 }  // namespace rbcsim::lattice::testing

@@ -31,6 +31,9 @@ void add_lattice_options(OptionTable& table) {
   table.add_choice("lattice.kernel", entry_names(lattice::fluid_kernels()), "optimised",
                    "Fluid kernel: the fused optimised one, or the plain reference it is tested "
                    "against (same populations to round-off).");
+  table.add_choice("lattice.precision", entry_names(lattice::precisions()), "double",
+                   "Population storage: double, or single (floats of f_i - w_i, half the memory "
+                   "traffic; optimised kernel only; docs/physics.md, single precision).");
 }
 
 }  // namespace rbcsim::config
