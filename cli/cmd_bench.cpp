@@ -76,6 +76,7 @@ lattice::FluidThroughput best_fluid_throughput(const std::array<int, 3>& extent,
         lattice::measure_fluid_mlups(extent[0], extent[1], extent[2], steps, threads);
     best.optimised_mlups = std::max(best.optimised_mlups, measured.optimised_mlups);
     best.reference_mlups = std::max(best.reference_mlups, measured.reference_mlups);
+    best.single_mlups = std::max(best.single_mlups, measured.single_mlups);
   }
   return best;
 }
@@ -88,6 +89,10 @@ Json fluid_entry(const std::array<int, 3>& extent, const lattice::FluidThroughpu
           {"reference_mlups", throughput.reference_mlups},
           {"optimised_over_reference", throughput.optimised_mlups / throughput.reference_mlups},
           {"roofline_fraction", throughput.optimised_mlups / roofline_mlups},
+          {"single_mlups", throughput.single_mlups},
+          {"single_over_double", throughput.single_mlups / throughput.optimised_mlups},
+          // Single precision moves half the population bytes: its roofline is twice as high.
+          {"single_roofline_fraction", throughput.single_mlups / (2.0 * roofline_mlups)},
           {"speedup_vs_reference", comparable ? ratio_or_null(reference.fluid_mlups(threads),
                                                               throughput.optimised_mlups, false)
                                               : Json(nullptr)}};
@@ -232,6 +237,14 @@ void print_fluid_rows(const Json& runs, std::size_t index) {
             index == 1 ? "target >= " + fixed(100.0 * kRooflineTarget, 0) + " % (large lattice)"
                        : "in cache: may exceed 100 %");
   if (index == 0) print_row("  vs the reference (below)", field("speedup_vs_reference", 1, "x"));
+  print_row(name + ", single precision (MLUPS)", field("single_mlups", 1));
+  print_row("  single / double", field("single_over_double", 2, "x"));
+  print_row("  fraction of the roofline at 152 B/node",
+            per_run(runs, [&](const Json& run) {
+              return fixed(100.0 * run["fluid"][index]["single_roofline_fraction"].get<double>(),
+                           0) +
+                     " %";
+            }));
 }
 
 void print_coupled_rows(const Json& runs, std::size_t index, bool verbose) {

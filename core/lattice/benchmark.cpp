@@ -11,9 +11,11 @@
 namespace rbcsim::lattice {
 namespace {
 
-double kernel_mlups(const LatticeGrid& grid, const char* kernel, std::size_t steps) {
+double kernel_mlups(const LatticeGrid& grid, const char* kernel, std::size_t steps,
+                    Precision precision = Precision::double_precision) {
   FluidParameters parameters;
   parameters.kernel = kernel;
+  parameters.precision = precision;
   FluidSolver solver(grid, parameters);
   const std::size_t node_count = grid.node_count();
   VectorField velocity{std::vector<double>(node_count, 0.0), std::vector<double>(node_count, 0.0),
@@ -38,6 +40,7 @@ FluidThroughput measure_fluid_mlups(int nx, int ny, int nz, std::size_t steps, i
   FluidThroughput throughput;
   throughput.optimised_mlups = kernel_mlups(grid, "optimised", steps);
   throughput.reference_mlups = kernel_mlups(grid, "reference", steps);
+  throughput.single_mlups = kernel_mlups(grid, "optimised", steps, Precision::single_precision);
   return throughput;
 }
 

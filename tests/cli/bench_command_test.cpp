@@ -35,6 +35,11 @@ TEST(ValidateBenchCommand, JsonHasBandwidthFluidAndCoupledFiguresPerThreadCount)
     for (const auto& fluid : run["fluid"]) {
       EXPECT_GT(fluid["optimised_mlups"].get<double>(), 0.0);
       EXPECT_GT(fluid["reference_mlups"].get<double>(), 0.0);
+      EXPECT_GT(fluid["single_mlups"].get<double>(), 0.0);
+      // Single precision's roofline is twice double's (152 against 304 bytes per node update).
+      EXPECT_NEAR(fluid["single_roofline_fraction"].get<double>(),
+                  fluid["single_mlups"].get<double>() / (2.0 * run["roofline_mlups"].get<double>()),
+                  1e-12);
     }
     ASSERT_EQ(run["coupled"].size(), 2u);
     EXPECT_EQ(run["coupled"][0]["vertices"], 642);

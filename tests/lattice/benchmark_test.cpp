@@ -14,6 +14,7 @@ TEST(FluidBenchmark, ReportsPositiveThroughputAndRestoresThreads) {
   const auto throughput = measure_fluid_mlups(8, 8, 4, 4, 1);
   EXPECT_GT(throughput.optimised_mlups, 0.0);
   EXPECT_GT(throughput.reference_mlups, 0.0);
+  EXPECT_GT(throughput.single_mlups, 0.0);
   EXPECT_EQ(omp_get_max_threads(), threads_before);
 }
 
