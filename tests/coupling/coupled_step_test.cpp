@@ -192,5 +192,22 @@ TEST(CoupledStep, ResultsAreBitIdenticalForOneAndTwoThreadsWithMembraneViscosity
   expect_thread_independent([] { return couette_fluid(20, 18, 16, 0.01); }, membrane);
 }
 
+// membrane.viscosity_Pa_s_um = 0 with the term switched on: every vertex and every population as
+// without the term, bit for bit (issue: "0 reproduces today's results").
+TEST(CoupledStep, AMembraneViscosityOfZeroLeavesTheRunBitIdentical) {
+  const auto fluid = [] { return couette_fluid(20, 18, 16, 0.01); };
+  membrane::MembraneParameters with_zero;
+  with_zero.forces.push_back("viscosity");
+  with_zero.viscosity_Pa_s_um = 0.0;
+  const auto without = sheared_capsule_after_steps(1, fluid, membrane::MembraneParameters{});
+  const auto zero = sheared_capsule_after_steps(1, fluid, with_zero);
+  for (std::size_t v = 0; v < without.positions_lu.size(); ++v) {
+    for (int axis = 0; axis < 3; ++axis) {
+      ASSERT_EQ(without.positions_lu[v][axis], zero.positions_lu[v][axis]) << "vertex " << v;
+    }
+  }
+  EXPECT_TRUE(without.populations == zero.populations);
+}
+
 }  // namespace
 }  // namespace rbcsim::coupling
