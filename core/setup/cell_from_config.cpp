@@ -82,7 +82,6 @@ shapes::NamedCellSettings named_cell_settings_from(const config::Config& config,
   energy.stiffening_stages = config.integer("mesh.energy.stiffening_stages");
   energy.stage_iterations =
       static_cast<std::size_t>(config.integer("mesh.energy.stage_iterations"));
-  energy.trials = config.integer("mesh.energy.trials");
   energy.seed = static_cast<std::uint64_t>(config.integer("mesh.energy.seed"));
   energy.perturbation_um = config.number("mesh.energy.perturbation_um");
   energy.force_tolerance_pN = config.number("mesh.energy.force_tolerance_pN");
@@ -94,6 +93,7 @@ shapes::NamedCellSettings named_cell_settings_from(const config::Config& config,
     energy.relaxed_area_difference = config.number(key);
     energy.relaxed_area_difference_key = key;
     energy.paths = config.string_list("mesh.energy.paths." + std::string(shape));
+    energy.trials = config.integer("mesh.energy.trials." + std::string(shape));
   }
   return settings;
 }

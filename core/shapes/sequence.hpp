@@ -19,6 +19,8 @@ struct SequenceShape {
   double relaxed_area_difference;  // default Delta a0 (mesh.energy.relaxed_area_difference.<name>)
   // Default paths of its minimisation (mesh.energy.paths.<name>; energy_shape.hpp).
   std::vector<std::string> paths;
+  // Default seeded starts of each path (mesh.energy.trials.<name>); the lowest minimum wins.
+  int trials = 1;
 };
 
 // In sequence order, from the most stomatocytic to the most echinocytic.

@@ -126,6 +126,12 @@ void add_energy_model_options(OptionTable& table) {
                           "Paths from the reference every trial of the " + std::string(shape.name) +
                               " follows (the lowest valid minimum wins): " +
                               shapes::energy_paths().described_names() + ".");
+    table
+        .add_integer("mesh.energy.trials." + std::string(shape.name), "", shape.trials,
+                     "Seeded starts of each path of the " + std::string(shape.name) +
+                         "; the lowest energy wins.")
+        .at_least(1)
+        .at_most(100);
     table.add_number("mesh.energy.relaxed_area_difference." + std::string(shape.name), "",
                      shape.relaxed_area_difference,
                      "Reduced relaxed area difference Delta a0 of the " + std::string(shape.name) +
@@ -154,11 +160,6 @@ void add_energy_path_options(OptionTable& table) {
       .add_integer("mesh.energy.stage_iterations", "", static_cast<int>(defaults.stage_iterations),
                    "FIRE iterations per stage of the path, at most.")
       .at_least(1);
-  table
-      .add_integer("mesh.energy.trials", "", defaults.trials,
-                   "Seeded starts; the lowest energy wins.")
-      .at_least(1)
-      .at_most(100);
   table
       .add_integer("mesh.energy.seed", "", static_cast<int>(defaults.seed),
                    "Seed of the first trial's random start (trial k uses seed + k).")
