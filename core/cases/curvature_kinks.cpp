@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <vector>
 
 #include "membrane/force_law.hpp"
@@ -17,10 +16,8 @@ CurvatureKinks::CurvatureKinks(const membrane::MembraneModel& model)
       active_(std::ranges::find(model.parameters().forces, "total_curvature") !=
               model.parameters().forces.end()),
       vertex_form_(membrane::is_vertex_distribution(model.parameters().distribution)) {
-  const auto& lengths_um = model.reference().edge_lengths_um;
-  const double mean_edge_um = std::accumulate(lengths_um.begin(), lengths_um.end(), 0.0) /
-                              static_cast<double>(lengths_um.size());
-  patch_smoothing_um_ = kCurvatureSmoothing_rad * mean_edge_um / 2.0;
+  patch_smoothing_um_ =
+      kCurvatureSmoothing_rad * membrane::mean_reference_edge_um(model.reference()) / 2.0;
 }
 
 double CurvatureKinks::sign_push_pN(const membrane::MembraneForces& forces) const {
@@ -75,16 +72,17 @@ void CurvatureKinks::smooth_patches(std::span<const Vec3> positions_um,
   membrane::measure_vertex_patches(positions_um, model_.triangles(), topology, normals,
                                    offsets_um);
   const double push_pN = sign_push_pN(forces);
+  // The change of each flat patch's push; zero elsewhere.
+  std::vector<double> push_changes_pN(topology.vertex_count(), 0.0);
   for (std::size_t v = 0; v < topology.vertex_count(); ++v) {
     const double offset_um = offsets_um[v];
     if (std::abs(offset_um) >= patch_smoothing_um_) continue;
     const double sign = (offset_um > 0.0) - (offset_um < 0.0);
-    const Vec3 force_pN = (offset_um / patch_smoothing_um_ - sign) * push_pN * normals[v];
-    net_forces_pN[v] += force_pN;
-    const double share = 1.0 / membrane::ring_size(topology, v);
-    membrane::for_each_neighbour(topology, v,
-                                 [&](std::size_t u) { net_forces_pN[u] -= share * force_pN; });
+    push_changes_pN[v] = (offset_um / patch_smoothing_um_ - sign) * push_pN;
   }
+  std::vector<Vec3> changes_pN(topology.vertex_count());
+  membrane::gather_vertex_pushes(topology, normals, push_changes_pN, changes_pN);
+  for (std::size_t v = 0; v < topology.vertex_count(); ++v) net_forces_pN[v] += changes_pN[v];
 }
 
 }  // namespace rbcsim::cases

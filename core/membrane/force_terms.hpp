@@ -151,7 +151,8 @@ class VertexPatchTerm : public LawTerm {
  private:
   // Scratch layout: the patch offsets M_i in deviations[0, V), the normals in
   // slot_forces_pN[0, V); a term may use deviations[V, 2V) and energies_pN_um[0, V) (the edge
-  // count, their size, is 3V - 6 >= 2V). Checks the limit, fills energy and max |d|.
+  // count, their size, is 3V - 6 >= 2V), and evaluate() then writes the pushes over
+  // energies_pN_um[0, V). Checks the limit, fills energy and max |d|.
   virtual void measure(const TermContext& context, TermScratch& scratch, TermForces& out) const = 0;
   // The push of `vertex` (of vertex_count), pN.
   virtual double push_pN(const TermScratch& scratch, std::size_t vertex_count,

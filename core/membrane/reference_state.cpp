@@ -24,6 +24,12 @@ double mean_volume_gradient_um2(std::span<const mesh::Triangle> triangles,
 
 }  // namespace
 
+double mean_reference_edge_um(const ReferenceState& reference) {
+  double sum = 0.0;
+  for (double length : reference.edge_lengths_um) sum += length;
+  return sum / static_cast<double>(reference.edge_lengths_um.size());
+}
+
 ReferenceState capture_reference_state(std::span<const Vec3> positions_um,
                                        std::span<const mesh::Triangle> triangles,
                                        const mesh::MeshTopology& topology) {

@@ -32,6 +32,9 @@ struct ReferenceState {
   std::vector<double> vertex_offsets_um;
 };
 
+// The mean of the reference edge lengths L0, um.
+double mean_reference_edge_um(const ReferenceState& reference);
+
 // Throws InputError (source "stress-free mesh") for a degenerate triangle or a non-positive
 // enclosed volume (inward-facing triangles).
 ReferenceState capture_reference_state(std::span<const Vec3> positions_um,

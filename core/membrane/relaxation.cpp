@@ -22,12 +22,6 @@ double max_norm(std::span<const Vec3> vectors) {
   return largest;
 }
 
-double mean_reference_edge_um(const ReferenceState& reference) {
-  double sum = 0.0;
-  for (double length : reference.edge_lengths_um) sum += length;
-  return sum / static_cast<double>(reference.edge_lengths_um.size());
-}
-
 }  // namespace
 
 double estimate_stiffest_mode_pN_per_um(const MembraneModel& model,

@@ -9,6 +9,22 @@ namespace {
 
 std::size_t index(std::int32_t i) { return static_cast<std::size_t>(i); }
 
+// Calls visit(u) for every ring neighbour u of vertex v.
+template <class Visit>
+void for_each_neighbour(const mesh::MeshTopology& topology, std::size_t v, const Visit& visit) {
+  const auto& offsets = topology.vertex_edge_offsets();
+  for (auto k = index(offsets[v]); k < index(offsets[v + 1]); ++k) {
+    const auto& edge = topology.edges()[index(topology.vertex_edges()[k])];
+    visit(index(edge.vertex0) == v ? index(edge.vertex1) : index(edge.vertex0));
+  }
+}
+
+// The ring size n_v of vertex v.
+double ring_size(const mesh::MeshTopology& topology, std::size_t v) {
+  const auto& offsets = topology.vertex_edge_offsets();
+  return static_cast<double>(offsets[v + 1] - offsets[v]);
+}
+
 }  // namespace
 
 void measure_vertex_patches(std::span<const Vec3> positions_um,
@@ -33,12 +49,11 @@ void measure_vertex_patches(std::span<const Vec3> positions_um,
 }
 
 void gather_vertex_pushes(const mesh::MeshTopology& topology, std::span<const Vec3> normals,
-                          const std::function<double(std::size_t)>& push_pN,
-                          std::span<Vec3> forces_pN) {
+                          std::span<const double> pushes_pN, std::span<Vec3> forces_pN) {
   parallel_for(topology.vertex_count(), [&](std::size_t v) {
-    Vec3 force = push_pN(v) * normals[v];
+    Vec3 force = pushes_pN[v] * normals[v];
     for_each_neighbour(topology, v, [&](std::size_t u) {
-      force -= push_pN(u) / ring_size(topology, u) * normals[u];
+      force -= pushes_pN[u] / ring_size(topology, u) * normals[u];
     });
     forces_pN[v] = force;
   });

@@ -14,7 +14,6 @@
 #pragma once
 
 #include <cstdint>
-#include <functional>
 #include <span>
 
 #include "common/vec3.hpp"
@@ -23,35 +22,16 @@
 
 namespace rbcsim::membrane {
 
-// Calls visit(u) for every ring neighbour u of vertex v.
-template <class Visit>
-void for_each_neighbour(const mesh::MeshTopology& topology, std::size_t v, const Visit& visit) {
-  const auto& offsets = topology.vertex_edge_offsets();
-  for (auto k = static_cast<std::size_t>(offsets[v]); k < static_cast<std::size_t>(offsets[v + 1]);
-       ++k) {
-    const auto& edge = topology.edges()[static_cast<std::size_t>(topology.vertex_edges()[k])];
-    const auto other = static_cast<std::size_t>(edge.vertex0) == v ? edge.vertex1 : edge.vertex0;
-    visit(static_cast<std::size_t>(other));
-  }
-}
-
-// The ring size n_v of vertex v.
-inline double ring_size(const mesh::MeshTopology& topology, std::size_t v) {
-  const auto& offsets = topology.vertex_edge_offsets();
-  return static_cast<double>(offsets[v + 1] - offsets[v]);
-}
-
 // Unit patch normals and offsets M_i (um) of every vertex (spans sized vertex_count()).
 void measure_vertex_patches(std::span<const Vec3> positions_um,
                             std::span<const mesh::Triangle> triangles,
                             const mesh::MeshTopology& topology, std::span<Vec3> normals,
                             std::span<double> offsets_um);
 
-// The forces (overwritten, pN) of the pushes push_pN(i) along the patch normals, gathered per
+// The forces (overwritten, pN) of the pushes pushes_pN[i] along the patch normals, gathered per
 // vertex (vertex i's own push minus its neighbours' shares), so the result does not depend on the
 // thread count.
 void gather_vertex_pushes(const mesh::MeshTopology& topology, std::span<const Vec3> normals,
-                          const std::function<double(std::size_t)>& push_pN,
-                          std::span<Vec3> forces_pN);
+                          std::span<const double> pushes_pN, std::span<Vec3> forces_pN);
 
 }  // namespace rbcsim::membrane

@@ -1,7 +1,6 @@
 // The per-vertex form of the angle terms (vertex_patch.hpp): the shared evaluation and
 // HemoCell 2.x's per-vertex bending. The area difference and total curvature in this form are in
 // curvature_sum_term.cpp, beside their edge forms.
-#include <numeric>
 #include <span>
 
 #include "membrane/force_terms.hpp"
@@ -17,17 +16,17 @@ void VertexPatchTerm::evaluate(const TermContext& context, TermScratch& scratch,
                          std::span(scratch.slot_forces_pN).first(vertices),
                          std::span(scratch.deviations).first(vertices));
   measure(context, scratch, out);
-  gather_vertex_pushes(
-      context.topology, std::span(scratch.slot_forces_pN).first(vertices),
-      [&](std::size_t v) { return push_pN(scratch, vertices, v); }, out.forces_pN);
+  // Each push once, into energies_pN_um (summed by measure, free now), then gathered.
+  const auto pushes_pN = std::span(scratch.energies_pN_um).first(vertices);
+  parallel_for(vertices, [&](std::size_t v) { pushes_pN[v] = push_pN(scratch, vertices, v); });
+  gather_vertex_pushes(context.topology, std::span(scratch.slot_forces_pN).first(vertices),
+                       pushes_pN, out.forces_pN);
 }
 
 VertexBendingTerm::VertexBendingTerm(const MembraneParameters& parameters,
                                      const ReferenceState& reference)
     : VertexPatchTerm(ForceLaw::with_linear_term(kTau), parameters.k_bend_kBT, parameters),
-      mean_edge_um_(std::accumulate(reference.edge_lengths_um.begin(),
-                                    reference.edge_lengths_um.end(), 0.0) /
-                    static_cast<double>(reference.edge_lengths_um.size())) {}
+      mean_edge_um_(mean_reference_edge_um(reference)) {}
 
 void VertexBendingTerm::measure(const TermContext& context, TermScratch& scratch,
                                 TermForces& out) const {

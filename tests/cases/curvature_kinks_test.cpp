@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <numeric>
 #include <cmath>
 #include <utility>
 
@@ -60,6 +63,19 @@ KinkSetup stretched_discocyte(const MembraneModel& model, const rbcsim::mesh::Tr
     if (angle < flattest) flattest = angle, setup.edge_index = e;
   }
   return setup;
+}
+
+// The largest change of a vertex's force between two force arrays, over `vertices`.
+template <class Vertices>
+double largest_jump(const std::vector<Vec3>& above, const std::vector<Vec3>& below,
+                    const Vertices& vertices) {
+  double jump = 0.0;
+  for (const auto vertex : vertices) {
+    jump = std::max(jump, (above[static_cast<std::size_t>(vertex)] -
+                           below[static_cast<std::size_t>(vertex)])
+                              .norm());
+  }
+  return jump;
 }
 
 class Distribution : public ::testing::TestWithParam<const char*> {};
@@ -121,19 +137,15 @@ TEST_P(Distribution, SmoothedForceIsContinuousAcrossAFlatEdge) {
   };
   const auto [model_above, smoothed_above] = smoothed_at(1e-7);
   const auto [model_below, smoothed_below] = smoothed_at(-1e-7);
-  double model_jump = 0.0;
-  double smoothed_jump = 0.0;
-  for (const auto vertex : {edge.vertex0, edge.vertex1, edge.wing0, edge.wing1}) {
-    model_jump = std::max(model_jump, (model_above[vertex] - model_below[vertex]).norm());
-    smoothed_jump =
-        std::max(smoothed_jump, (smoothed_above[vertex] - smoothed_below[vertex]).norm());
-  }
+  const std::array<std::int32_t, 4> hinge = {edge.vertex0, edge.vertex1, edge.wing0, edge.wing1};
+  const double model_jump = largest_jump(model_above, model_below, hinge);
+  const double smoothed_jump = largest_jump(smoothed_above, smoothed_below, hinge);
   EXPECT_GT(model_jump, 1e-3);
   EXPECT_LT(smoothed_jump, 1e-4 * model_jump);
   // Outside the window nothing changes.
   const auto [model_outside, smoothed_outside] =
       smoothed_at(2 * rbcsim::cases::kCurvatureSmoothing_rad);
-  for (const auto vertex : {edge.vertex0, edge.vertex1, edge.wing0, edge.wing1}) {
+  for (const auto vertex : hinge) {
     EXPECT_EQ(model_outside[vertex], smoothed_outside[vertex]);
   }
   // Without the term nothing changes either.
@@ -188,12 +200,10 @@ TEST(VertexFormKinks, SmoothedForceIsContinuousAcrossAFlatPatch) {
   };
   const auto [model_above, smoothed_above] = smoothed_at(1e-9);
   const auto [model_below, smoothed_below] = smoothed_at(-1e-9);
-  double model_jump = 0.0;
-  double smoothed_jump = 0.0;
-  for (std::size_t v = 0; v < n; ++v) {
-    model_jump = std::max(model_jump, (model_above[v] - model_below[v]).norm());
-    smoothed_jump = std::max(smoothed_jump, (smoothed_above[v] - smoothed_below[v]).norm());
-  }
+  std::vector<std::size_t> every_vertex(n);
+  std::iota(every_vertex.begin(), every_vertex.end(), std::size_t{0});
+  const double model_jump = largest_jump(model_above, model_below, every_vertex);
+  const double smoothed_jump = largest_jump(smoothed_above, smoothed_below, every_vertex);
   EXPECT_GT(model_jump, 1e-3);
   EXPECT_LT(smoothed_jump, 1e-4 * model_jump);
 }

@@ -162,22 +162,22 @@ TEST(VertexForm, ForcesDoNotDependOnTheThreadCount) {
   for (std::size_t v = 0; v < moved.size(); ++v) EXPECT_EQ(one.total_pN[v], two.total_pN[v]);
 }
 
+// Building a model of the bipyramid with `parameters` is an InputError whose message has `text`.
+void expect_refused(const MembraneParameters& parameters, const std::string& text) {
+  try {
+    const MembraneModel model(bipyramid(1.0), parameters);
+    FAIL() << "accepted; expected an error with: " << text;
+  } catch (const rbcsim::InputError& error) {
+    EXPECT_THAT(error.what(), testing::HasSubstr(text));
+  }
+}
+
 TEST(VertexForm, TheOptimisedKernelAndAnUnknownNameSayWhatIsAccepted) {
   auto parameters = vertex_form({"bend"});
   parameters.kernel = "optimised";
-  try {
-    const MembraneModel model(bipyramid(1.0), parameters);
-    FAIL() << "the optimised kernel accepted the vertex form";
-  } catch (const rbcsim::InputError& error) {
-    EXPECT_THAT(error.what(), testing::HasSubstr("membrane.kernel=reference"));
-  }
+  expect_refused(parameters, "membrane.kernel=reference");
   parameters.distribution = "hinge";
-  try {
-    const MembraneModel model(bipyramid(1.0), parameters);
-    FAIL() << "an unknown distribution was accepted";
-  } catch (const rbcsim::InputError& error) {
-    EXPECT_THAT(error.what(), testing::HasSubstr("paper, gradient, vertex"));
-  }
+  expect_refused(parameters, "paper, gradient, vertex");
 }
 
 }  // namespace
