@@ -1,0 +1,46 @@
+// Contact between different cells: a short-range repulsion between vertex pairs, standing in for
+// the lubrication film the lattice cannot resolve (the cell-cell twin of the wall repulsion,
+// cases/wall_repulsion.hpp). For vertices i, j of different cells at distance d < range_um:
+//     F_ij = force_at_contact_pN * (1 - d / range_um)^2 * (x_i - x_j) / d,   F_ji = -F_ij,
+// zero with zero slope at the range. The pair force is antisymmetric bit for bit (x_j - x_i is
+// exactly -(x_i - x_j) in floating point), so the net force is zero to the round-off of summing.
+//
+// The range must exceed the membranes' edge length: a vertex can otherwise slip through the middle
+// of another cell's triangle without meeting any of its vertices (setup checks it).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+
+#include "common/vec3.hpp"
+#include "contact/cell_list.hpp"
+
+namespace rbcsim::contact {
+
+struct ContactParameters {
+  double force_at_contact_pN = 0.0;  // magnitude at zero distance; 0: no contact force
+  double range_um = 0.0;             // > 0 when the force is not 0
+};
+
+// What one evaluation found, over all vertices.
+struct ContactStatistics {
+  std::size_t pairs_in_range = 0;   // ordered pairs (i, j) of different cells within the range
+  std::size_t close_pairs = 0;      // of those, within a quarter of the range: near overlap
+  double closest_um = std::numeric_limits<double>::infinity();
+};
+
+// Adds the contact forces to forces_pN (one per position). `owner[i]` is the cell of vertex i,
+// the vertices grouped cell by cell (owner non-decreasing); pairs of one cell never interact (the
+// membrane's own forces hold it together), and are skipped without being looked at. Each vertex sums
+// its own pairs in the cell list's order (a gather: parallel and thread-count independent).
+// Throws std::invalid_argument for mismatched sizes, ungrouped owners or a non-positive range with
+// a force.
+ContactStatistics add_cell_contact_forces(std::span<const Vec3> positions_um,
+                                          std::span<const std::uint32_t> owner,
+                                          const ContactParameters& parameters,
+                                          const PeriodicBox& box, std::span<Vec3> forces_pN,
+                                          CellList& workspace);
+
+}  // namespace rbcsim::contact
