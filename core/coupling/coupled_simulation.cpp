@@ -101,6 +101,41 @@ void CoupledSimulation::add_external_force(ExternalForce force) {
   external_forces_.push_back(std::move(force));
 }
 
+void CoupledSimulation::set_cell_contact(const contact::ContactParameters& parameters,
+                                         std::string_view option) {
+  if (parameters.force_at_contact_pN != 0.0 && !(parameters.range_um > 0.0)) {
+    throw InputError(std::string(option), "the contact range must be > 0");
+  }
+  contact_ = parameters;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int nodes = axis == 0 ? grid_.nx : axis == 1 ? grid_.ny : grid_.nz;
+    contact_box_.length_um[axis] = ibm::axis_periodic(grid_, axis) ? nodes * frame_.dx_um : 0.0;
+  }
+}
+
+void CoupledSimulation::add_contact_forces() {
+  if (contact_.force_at_contact_pN == 0.0 || cells_.size() < 2) return;
+  contact_positions_um_.clear();
+  contact_owners_.clear();
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    const auto positions = cells_[k].positions_um();
+    contact_positions_um_.insert(contact_positions_um_.end(), positions.begin(), positions.end());
+    contact_owners_.insert(contact_owners_.end(), positions.size(),
+                           static_cast<std::uint32_t>(k));
+  }
+  contact_forces_pN_.assign(contact_positions_um_.size(), Vec3::Zero());
+  contact_statistics_ =
+      contact::add_cell_contact_forces(contact_positions_um_, contact_owners_, contact_,
+                                       contact_box_, contact_forces_pN_, contact_list_);
+  if (contact_statistics_.close_pairs > 0) ++close_contact_steps_;
+  std::size_t offset = 0;
+  for (auto& cell : cells_) {
+    auto forces = cell.external_forces_pN();
+    for (std::size_t v = 0; v < forces.size(); ++v) forces[v] += contact_forces_pN_[offset + v];
+    offset += forces.size();
+  }
+}
+
 void CoupledSimulation::add_stop_criterion(std::unique_ptr<StopCriterion> criterion) {
   stop_criteria_.push_back(std::move(criterion));
 }
@@ -135,6 +170,7 @@ void CoupledSimulation::spread_forces() {
       fail(k, failure.what());
     }
   }
+  add_contact_forces();
   lap(start, phase_times_.membrane_s);
   auto& force_density = fluid_->force_density();
   for (std::size_t k = 0; k < cells_.size(); ++k) {
@@ -302,6 +338,7 @@ void CoupledSimulation::resume_from(const std::filesystem::path& checkpoint_file
 void CoupledSimulation::save_state(StateArchive& archive) const {
   if (forces_spread_) throw std::logic_error("save_state between spread_forces() and step()");
   archive.put("simulation.time_step", {static_cast<double>(time_step_)});
+  archive.put("simulation.close_contact_steps", {static_cast<double>(close_contact_steps_)});
   fluid_->save_state(archive);
   if (cytoplasm_) cytoplasm_->save_state(archive);
   for (std::size_t k = 0; k < cells_.size(); ++k) {
@@ -315,6 +352,8 @@ void CoupledSimulation::save_state(StateArchive& archive) const {
 
 void CoupledSimulation::restore_state(StateArchive& archive) {
   time_step_ = static_cast<std::size_t>(archive.take_number("simulation.time_step"));
+  close_contact_steps_ =
+      static_cast<std::size_t>(archive.take_number("simulation.close_contact_steps"));
   fluid_->restore_state(archive);
   if (cytoplasm_) cytoplasm_->restore_state(archive, cells_);
   for (std::size_t k = 0; k < cells_.size(); ++k) {

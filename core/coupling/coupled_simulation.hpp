@@ -1,6 +1,7 @@
 // The coupled lattice Boltzmann - immersed boundary - membrane time loop (docs/architecture.md) for
 // a list of cells (one now, many later). One step:
-//   1. membrane forces at the current vertex positions, plus the external-force hooks (tweezers);
+//   1. membrane forces at the current vertex positions, plus the external-force hooks (tweezers,
+//      walls) and, with several cells, their contact (contact/cell_repulsion.hpp);
 //   2. pN -> lattice force, one interpolation stencil per cell, spread onto the force density
 //      (the sum of the spread forces equals the sum of the vertex forces);
 //   3. fluid collide-and-stream with that force (Guo); with a viscosity contrast
@@ -27,9 +28,12 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/state_archive.hpp"
+#include "contact/cell_list.hpp"
+#include "contact/cell_repulsion.hpp"
 #include "coupling/cell.hpp"
 #include "coupling/cytoplasm_indicator.hpp"
 #include "coupling/stability.hpp"
@@ -121,6 +125,14 @@ class CoupledSimulation {
   // Throws std::invalid_argument for a duplicate name or an interval of 0.
   void add_observer(Observer observer);
   void add_external_force(ExternalForce force);
+  // Contact between cells from the next step on, added to their external forces after the hooks.
+  // Pairs are found across the lattice's periodic axes (minimum image). Throws InputError naming
+  // `option` for a non-positive range with a non-zero force.
+  void set_cell_contact(const contact::ContactParameters& parameters, std::string_view option);
+  // What the latest step's contact found, and in how many steps so far two cells came within a
+  // quarter of the range (ContactStatistics::close_pairs > 0).
+  const contact::ContactStatistics& contact_statistics() const { return contact_statistics_; }
+  std::size_t close_contact_steps() const { return close_contact_steps_; }
   void add_stop_criterion(std::unique_ptr<StopCriterion> criterion);
 
   // One coupled step (phases 1-6).
@@ -174,6 +186,7 @@ class CoupledSimulation {
     std::optional<std::size_t> last_observed_step;
   };
 
+  void add_contact_forces();
   void advance_fluid();
   void apply_membrane_friction();
   void advance_cells();
@@ -200,6 +213,15 @@ class CoupledSimulation {
   std::vector<Cell> cells_;
   std::vector<ForceCapMonitor> force_cap_monitors_;
   std::vector<ExternalForce> external_forces_;
+  contact::ContactParameters contact_;
+  contact::PeriodicBox contact_box_;
+  contact::CellList contact_list_;
+  contact::ContactStatistics contact_statistics_;
+  std::size_t close_contact_steps_ = 0;
+  // Every cell's vertices one after the other: the contact's input and output.
+  std::vector<Vec3> contact_positions_um_;
+  std::vector<std::uint32_t> contact_owners_;
+  std::vector<Vec3> contact_forces_pN_;
   std::vector<RegisteredObserver> observers_;
   std::vector<std::unique_ptr<StopCriterion>> stop_criteria_;
   std::optional<CytoplasmIndicator> cytoplasm_;  // when the fluid has a viscosity contrast

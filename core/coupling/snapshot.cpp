@@ -58,6 +58,8 @@ struct VtkOutputState {
   std::filesystem::path directory;
   std::vector<Series> cells;
   Series fluid{"fluid.pvd", {}};
+  std::vector<std::int32_t> cell_kinds;  // non-empty: all cells in `together`
+  Series together{"cells.pvd", {}};
 };
 
 void add_cell_series(VtkOutputState& state, const CoupledSimulation& simulation) {
@@ -67,6 +69,10 @@ void add_cell_series(VtkOutputState& state, const CoupledSimulation& simulation)
 }
 
 void continue_membranes(VtkOutputState& state, const CoupledSimulation& simulation) {
+  if (!state.cell_kinds.empty()) {
+    state.together.continue_existing(simulation, state.directory);
+    return;
+  }
   add_cell_series(state, simulation);
   for (auto& series : state.cells) series.continue_existing(simulation, state.directory);
 }
@@ -77,6 +83,12 @@ void continue_fluid(VtkOutputState& state, const CoupledSimulation& simulation) 
 
 void write_membranes(VtkOutputState& state, const CoupledSimulation& simulation) {
   std::filesystem::create_directories(state.directory / "vtk");
+  if (!state.cell_kinds.empty()) {
+    const std::string file = "vtk/cells" + step_suffix(simulation.time_step()) + ".vtp";
+    write_cells_snapshot(state.directory / file, simulation, state.cell_kinds);
+    state.together.add(simulation, state.directory, file);
+    return;
+  }
   add_cell_series(state, simulation);
   for (std::size_t k = 0; k < simulation.cells().size(); ++k) {
     const std::string file = "vtk/" + cell_name(k) + step_suffix(simulation.time_step()) + ".vtp";
@@ -118,6 +130,42 @@ void write_cell_snapshot(const std::filesystem::path& path, const CoupledSimulat
                          io::VtkEncoding::base64);
 }
 
+void write_cells_snapshot(const std::filesystem::path& path, const CoupledSimulation& simulation,
+                          std::span<const std::int32_t> cell_kinds) {
+  const double velocity_unit = simulation.units().to_physical(PhysicalUnit::velocity_m_per_s, 1.0);
+  std::vector<Vec3> positions_um;
+  std::vector<Vec3> velocities_m_per_s;
+  std::vector<Vec3> total_forces_pN;
+  std::vector<Vec3> external_forces_pN;
+  std::vector<std::int32_t> ids;
+  std::vector<std::int32_t> kinds;
+  std::vector<std::array<std::int32_t, 3>> triangles;
+  for (std::size_t k = 0; k < simulation.cells().size(); ++k) {
+    const Cell& cell = simulation.cell(k);
+    const auto offset = static_cast<std::int32_t>(positions_um.size());
+    for (const auto& triangle : cell.model().triangles()) {
+      triangles.push_back({triangle[0] + offset, triangle[1] + offset, triangle[2] + offset});
+    }
+    for (std::size_t v = 0; v < cell.vertex_count(); ++v) {
+      positions_um.push_back(simulation.frame().to_um(cell.positions_lu()[v]));
+      velocities_m_per_s.push_back(velocity_unit * cell.velocities_lu()[v]);
+      ids.push_back(static_cast<std::int32_t>(k));
+      kinds.push_back(cell_kinds[k]);
+    }
+    const auto total = cell.total_forces_pN();
+    total_forces_pN.insert(total_forces_pN.end(), total.begin(), total.end());
+    const auto external = cell.external_forces_pN();
+    external_forces_pN.insert(external_forces_pN.end(), external.begin(), external.end());
+  }
+  const std::vector<io::PointDataArray> arrays = {
+      io::PointDataArray{"cell_id", 1, std::span<const std::int32_t>(ids)},
+      io::PointDataArray{"cell_kind", 1, std::span<const std::int32_t>(kinds)},
+      io::vector_point_array("external_force_pN", external_forces_pN),
+      io::vector_point_array("total_force_pN", total_forces_pN),
+      io::vector_point_array("velocity_m_per_s", velocities_m_per_s)};
+  io::write_vtk_polydata(path, positions_um, triangles, arrays, io::VtkEncoding::base64);
+}
+
 void write_fluid_snapshot(const std::filesystem::path& path, const CoupledSimulation& simulation) {
   const auto& fluid = simulation.fluid();
   const auto& grid = fluid.grid();
@@ -142,15 +190,16 @@ void write_fluid_snapshot(const std::filesystem::path& path, const CoupledSimula
 }
 
 void add_vtk_output(CoupledSimulation& simulation, const std::filesystem::path& directory,
-                    const SnapshotIntervals& intervals) {
+                    const SnapshotIntervals& intervals, std::span<const std::int32_t> cell_kinds) {
   auto state = std::make_shared<VtkOutputState>();
   state->directory = directory;
+  state->cell_kinds.assign(cell_kinds.begin(), cell_kinds.end());
   if (intervals.membrane_steps > 0) {
     simulation.add_observer(
         {"vtk_membrane", intervals.membrane_steps,
          [state](const CoupledSimulation& s) { write_membranes(*state, s); },
          [state](const CoupledSimulation& s) { continue_membranes(*state, s); },
-         /*needs_term_forces=*/true});
+         /*needs_term_forces=*/cell_kinds.empty()});
   }
   if (intervals.fluid_steps > 0) {
     simulation.add_observer({"vtk_fluid", intervals.fluid_steps,

@@ -10,10 +10,16 @@
 //   fluid     VTK ImageData (.vti) on the lattice nodes, in um like the membrane:
 //               velocity_m_per_s, density_kg_per_m3 (0 at non-fluid nodes), solid_mask (the
 //               lattice's node kinds: 0 fluid, 1 wall, 2 pressure outlet);
-//   series    one .pvd collection per cell and one for the fluid, time in seconds.
+//   series    one .pvd collection per cell and one for the fluid, time in seconds; for a
+//             suspension (add_vtk_output's cell_kinds) one collection, cells.pvd, whose
+//             .vtp files hold every cell, with the per-vertex arrays cell_id and cell_kind
+//             (an index into the run's morphologies) besides velocity and forces.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -32,13 +38,20 @@ struct SnapshotIntervals {
   std::size_t fluid_steps = 0;
 };
 
+// Every cell in one polydata (vertices numbered cell after cell), with cell_id and cell_kind.
+void write_cells_snapshot(const std::filesystem::path& path, const CoupledSimulation& simulation,
+                          std::span<const std::int32_t> cell_kinds);
+
 // Registers the observers "vtk_membrane" and "vtk_fluid", which write
 // <directory>/vtk/cell<K>_<step>.vtp and <directory>/vtk/fluid_<step>.vti and rewrite
 // <directory>/cell<K>.pvd and <directory>/fluid.pvd after each snapshot, so that an interrupted
 // run still leaves a valid collection. After a resume (CoupledSimulation::resume_from) the
 // collections go on from the interrupted run's, up to the restored state.
+// With `cell_kinds` (one per cell, e.g. the morphology's index): all cells in one series,
+// <directory>/cells.pvd of vtk/cells_<step>.vtp, instead of one per cell.
 void add_vtk_output(CoupledSimulation& simulation, const std::filesystem::path& directory,
-                    const SnapshotIntervals& intervals);
+                    const SnapshotIntervals& intervals,
+                    std::span<const std::int32_t> cell_kinds = {});
 
 // The diagnosis dump of a failed step into <directory>: cell<K>.vtp for every cell, fluid.vti,
 // and failure.json {"step", "time_s", "cell" (or null), "reason", "files"}.

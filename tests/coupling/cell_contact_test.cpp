@@ -1,0 +1,105 @@
+// Contact between cells in the coupled step (CoupledSimulation::set_cell_contact): two capsules
+// pushed into each other stop at the repulsion's range, the contact adds no net force, and the
+// result does not depend on the thread count.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "cases/suspension_packing.hpp"
+#include "common/thread_count_scope.hpp"
+#include "coupling_fixtures.hpp"
+#include "membrane/membrane_model.hpp"
+
+namespace rbcsim::coupling {
+namespace {
+
+using testing::capsule_parameters;
+using testing::periodic_fluid;
+using testing::plasma_units;
+using testing::sphere_mesh;
+
+constexpr double kPushPerVertexPN = 0.5;
+const contact::ContactParameters kContact{50.0, 0.75};
+
+// Two capsules of radius 2 um, 642 vertices each (edges about 0.3 um), their surfaces 0.7 um apart
+// along x (just inside the range) in a periodic box, each pushed towards the other with 0.5 pN per
+// vertex (321 pN). (Starting farther apart, the film between them drains for thousands of steps
+// before they meet.)
+std::unique_ptr<CoupledSimulation> pushed_pair() {
+  auto simulation = std::make_unique<CoupledSimulation>(periodic_fluid(36, 20, 20),
+                                                        plasma_units(), CouplingParameters{});
+  for (const double x_um : {6.5, 11.2}) {
+    const auto sphere = sphere_mesh(3, 2.0, Vec3(x_um, 5.0, 5.0));
+    simulation->add_cell(membrane::MembraneModel(sphere, capsule_parameters(300.0)),
+                         sphere.positions_um);
+  }
+  simulation->add_external_force(
+      [](std::size_t cell, const Cell&, std::span<Vec3> forces_pN) {
+        const double direction = cell == 0 ? 1.0 : -1.0;
+        for (Vec3& force : forces_pN) force.x() += direction * kPushPerVertexPN;
+      });
+  simulation->set_cell_contact(kContact, "test");
+  return simulation;
+}
+
+double closest_vertices_um(const CoupledSimulation& simulation) {
+  const auto a = simulation.positions_now_um(0);
+  const auto b = simulation.positions_now_um(1);
+  double closest = std::numeric_limits<double>::infinity();
+  for (const Vec3& p : a) {
+    for (const Vec3& q : b) closest = std::min(closest, (p - q).norm());
+  }
+  return closest;
+}
+
+TEST(CellContact, PushedCellsStopAtTheRangeWithoutNetForce) {
+  auto simulation = pushed_pair();
+  EXPECT_NEAR(closest_vertices_um(*simulation), 0.7, 1e-3);
+  // The contact's own measure of the closest pair, each step (infinite while none is in range).
+  double closest_um = std::numeric_limits<double>::infinity();
+  for (int step = 0; step < 2500; ++step) {
+    simulation->step();
+    closest_um = std::min(closest_um, simulation->contact_statistics().closest_um);
+  }
+  EXPECT_NEAR(closest_um, std::min(closest_um, closest_vertices_um(*simulation)), 0.1);
+  // They met (within the range) and were held off near it: the push flattens the capsules
+  // against each other (their centroids keep approaching) while the surfaces stay about the range
+  // apart; none came within a quarter of it, and no vertex of one is inside the other.
+  EXPECT_LT(closest_um, kContact.range_um);
+  EXPECT_GT(closest_um, 0.5 * kContact.range_um);
+  EXPECT_EQ(simulation->close_contact_steps(), 0u);
+  const auto b = simulation->positions_now_um(1);
+  const auto sphere = sphere_mesh(3, 2.0, Vec3::Zero());
+  for (const Vec3& p : simulation->positions_now_um(0)) {
+    ASSERT_FALSE(cases::surface_contains(b, sphere, p));
+  }
+  // The pushes cancel exactly; the contact forces cancel pair by pair.
+  Vec3 net = Vec3::Zero();
+  double magnitude = 0.0;
+  for (std::size_t c = 0; c < 2; ++c) {
+    for (const Vec3& force : simulation->cell(c).external_forces_pN()) {
+      net += force;
+      magnitude += force.norm();
+    }
+  }
+  EXPECT_GT(simulation->contact_statistics().pairs_in_range, 0u);
+  EXPECT_LT(net.norm(), 1e-13 * magnitude);
+}
+
+TEST(CellContact, OneAndTwoThreadsGiveTheSameRun) {
+  std::vector<std::vector<Vec3>> positions;
+  for (const int threads : {1, 2}) {
+    const ThreadCountScope scope(threads);
+    auto simulation = pushed_pair();
+    for (int step = 0; step < 800; ++step) simulation->step();
+    EXPECT_GT(simulation->contact_statistics().pairs_in_range, 0u);
+    positions.push_back(simulation->positions_now_um(1));
+  }
+  EXPECT_EQ(positions[0], positions[1]);
+}
+
+}  // namespace
+}  // namespace rbcsim::coupling
