@@ -1,6 +1,6 @@
-// rbcsim capillary: one cell through a stenosed capillary (paper §3.3-3.4):
-// deformation index against time, transit time through the narrow section, Reynolds and
-// capillary numbers.
+// rbcsim capillary: one cell through a stenosed capillary (paper §3.3-3.4): deformation index
+// against time, transit time through the narrow section, Reynolds and capillary numbers. With
+// --geometry tube --hematocrit H: many cells in a straight tube (capillary_suspension.hpp).
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
@@ -10,8 +10,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "capillary_suspension.hpp"
 #include "cases/capillary_output.hpp"
 #include "cases/release_orientations.hpp"
 #include "command_registry.hpp"
@@ -37,12 +39,16 @@ struct CapillaryOptions {
   std::optional<std::string> geometry;
   std::optional<std::string> wall_file;
   std::optional<std::string> orientations;
+  // The suspension (capillary_suspension.hpp).
+  std::optional<std::string> hematocrit;
+  std::optional<std::string> mix;
+  std::optional<std::string> diameter_um;
+  std::optional<std::string> length_um;
 };
 
 // The command's own options are --set assignments in disguise, so config.json records them.
-config::Config resolve_capillary_config(const CapillaryOptions& options) {
-  auto common = options.common;
-  auto& request = common.config;
+config::ConfigRequest capillary_request(const CapillaryOptions& options) {
+  auto request = options.common.config;
   if (options.mesh_file) assign_option(request, "mesh", "mesh.file", *options.mesh_file);
   if (options.geometry) {
     assign_option(request, "--geometry", "capillary.geometry", *options.geometry);
@@ -53,7 +59,14 @@ config::Config resolve_capillary_config(const CapillaryOptions& options) {
   if (options.orientations) {
     assign_option(request, "--orientations", "capillary.orientations", *options.orientations);
   }
-  return resolve_config(common);
+  for (const auto& [value, option, path] :
+       {std::tuple{&options.hematocrit, "--hematocrit", "suspension.hematocrit"},
+        std::tuple{&options.mix, "--mix", "suspension.mix"},
+        std::tuple{&options.diameter_um, "--diameter-um", "suspension.tube_diameter_um"},
+        std::tuple{&options.length_um, "--length-um", "suspension.tube_length_um"}}) {
+    if (*value) assign_option(request, option, path, **value);
+  }
+  return request;
 }
 
 nlohmann::ordered_json headline(const cases::CapillaryRun& run) {
@@ -250,7 +263,12 @@ std::optional<nlohmann::ordered_json> finished_release(const std::filesystem::pa
 }
 
 void run_capillary_command(const CapillaryOptions& options) {
-  const auto config = resolve_capillary_config(options);
+  const auto request = capillary_request(options);
+  const auto config = config::resolve_config(request);
+  if (wants_suspension(config)) {
+    run_suspension_command(request, config, options.common, options.checkpoint);
+    return;
+  }
   const auto wall = setup::capillary_wall_from(config);
   // The run simulates the compressed configuration; config.json keeps the user's.
   const auto compression = setup::capillary_compression_from(config, wall);
@@ -363,6 +381,28 @@ void attach_capillary(CLI::App& application) {
                    "Fibonacci set on the sphere, the first the configured one) and report the "
                    "transit's mean and spread")
       ->type_name("N");
+  command
+      ->add_option("--hematocrit", options->hematocrit,
+                   with_default("With --geometry tube: pack cells to this tube hematocrit "
+                                "(a suspension: apparent viscosity, discharge hematocrit, "
+                                "cell-free layer)",
+                                "suspension.hematocrit"))
+      ->type_name("H");
+  command
+      ->add_option("--mix", options->mix,
+                   "Morphologies of the suspension by number fraction, e.g. "
+                   "discocyte=0.8,echinocyte-III=0.2 (suspension.mix; default: all of "
+                   "--morphology)")
+      ->type_name("NAME=F,...");
+  command
+      ->add_option("--diameter-um", options->diameter_um,
+                   with_default("Diameter of the tube", "suspension.tube_diameter_um"))
+      ->type_name("D");
+  command
+      ->add_option("--length-um", options->length_um,
+                   with_default("Length of the tube, periodic along its axis",
+                                "suspension.tube_length_um"))
+      ->type_name("L");
   add_common_options(command, options->common);
   add_checkpoint_options(command, options->checkpoint, options->common);
   command->callback([options] { run_capillary_command(*options); });

@@ -84,7 +84,7 @@ TEST(CliCapillary, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
   const auto geometry =
       run_rbcsim("capillary --geometry tube --output '" + out + "'", scratch.path());
   EXPECT_EQ(geometry.exit_code, 2);
-  EXPECT_NE(geometry.err.find("capillary.geometry"), std::string::npos) << geometry.err;
+  EXPECT_NE(geometry.err.find("--hematocrit"), std::string::npos) << geometry.err;
   const auto wall =
       run_rbcsim("capillary --wall missing.stl --output '" + out + "'", scratch.path());
   EXPECT_EQ(wall.exit_code, 2);

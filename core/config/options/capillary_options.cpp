@@ -13,9 +13,12 @@ const cases::CapillarySettings kCapillaryDefaults{};
 void add_wall_options(OptionTable& table) {
   // The validation case by default: it is the paper's discocyte experiment (§3.3, Fig. 13), and
   // the discocyte is the default morphology.
-  table.add_choice("capillary.geometry", geometry::paper_capillary_names(), "paper-validation",
+  auto geometries = geometry::paper_capillary_names();
+  geometries.emplace_back("tube");
+  table.add_choice("capillary.geometry", geometries, "paper-validation",
                    "Built-in capillary: the paper's validation case (31.2 um long, 10.2 um across, "
-                   "6.75 um throat) or its three-morphology case (42 um, 10 um, 6.8 um).");
+                   "6.75 um throat) or its three-morphology case (42 um, 10 um, 6.8 um); tube: "
+                   "the straight periodic tube of a suspension (suspension.*).");
   table.add_string("capillary.wall_file", "",
                    "Wall surface (STL, fluid inside, lumen open along x) used instead of the "
                    "built-in capillary; empty: the built-in one.");

@@ -20,6 +20,7 @@ void add_stretch_options(OptionTable& table);
 void add_shear_options(OptionTable& table);
 void add_calibrate_options(OptionTable& table);
 void add_capillary_options(OptionTable& table);
+void add_suspension_options(OptionTable& table);
 
 using AddOptionArea = void (*)(OptionTable&);
 // std::to_array: adding an area does not mean counting them.
@@ -36,6 +37,7 @@ inline constexpr auto kOptionAreas = std::to_array<AddOptionArea>({
     add_shear_options,
     add_calibrate_options,
     add_capillary_options,
+    add_suspension_options,
 });
 
 }  // namespace rbcsim::config

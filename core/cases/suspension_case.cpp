@@ -1,0 +1,343 @@
+#include "cases/suspension_case.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <numeric>
+
+#include "cases/capillary_observables.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "geometry/lattice_grid.hpp"
+#include "geometry/tube_wall.hpp"
+#include "geometry/voxelise.hpp"
+#include "geometry/wall_links.hpp"
+#include "membrane/membrane_model.hpp"
+#include "mesh/geometry.hpp"
+
+namespace rbcsim::cases {
+namespace {
+
+using units::PhysicalUnit;
+
+// The cell-free layer's bins: about this long along the axis and along the circumference.
+constexpr double kLayerBinUm = 2.0;
+
+void require_positive_setting(double value, const char* option) {
+  if (!(value > 0.0)) throw InputError(option, "must be > 0");
+}
+
+void validate(const SuspensionSettings& settings) {
+  require_positive_setting(settings.tube_diameter_um, "suspension.tube_diameter_um");
+  require_positive_setting(settings.tube_length_um, "suspension.tube_length_um");
+  require_positive_setting(settings.plasma_mean_velocity_m_per_s,
+                   "suspension.plasma_mean_velocity_m_per_s");
+  require_positive_setting(settings.duration_s, "suspension.duration_s");
+  require_positive_setting(settings.sample_interval_s, "suspension.sample_interval_s");
+  require_positive_setting(settings.wall_repulsion_range_um, "suspension.wall_repulsion_range_um");
+  require_positive_setting(settings.contact.range_um, "suspension.contact_range_um");
+  if (!(settings.averaging_fraction > 0.0 && settings.averaging_fraction <= 1.0)) {
+    throw InputError("suspension.averaging_fraction", "must lie in (0, 1]");
+  }
+}
+
+// The range must bridge the membranes' largest edge (cell_repulsion.hpp).
+void require_contact_reaches_across_edges(std::span<const SuspensionMorphology> morphologies,
+                                          double range_um) {
+  for (const auto& morphology : morphologies) {
+    const membrane::MembraneModel probe(morphology.mesh, morphology.membrane);
+    double longest_um = 0.0;
+    for (const double length : probe.reference().edge_lengths_um) {
+      longest_um = std::max(longest_um, length);
+    }
+    if (range_um < longest_um) {
+      throw InputError("suspension.contact_range_um",
+                       format_number(range_um) + " um is shorter than the longest membrane edge of " +
+                           morphology.name + " (" + format_number(longest_um) +
+                           " um): a vertex could pass between another cell's vertices");
+    }
+  }
+}
+
+struct TubeLattice {
+  geometry::TubeWall wall;
+  geometry::LatticeGrid grid_um;
+  geometry::SolidMask solid_mask;
+};
+
+std::unique_ptr<lattice::FluidSolver> tube_fluid(const TubeLattice& tube,
+                                                 lattice::FluidParameters parameters,
+                                                 double body_force_lu) {
+  parameters.body_force = {body_force_lu, 0.0, 0.0};
+  const auto& grid = tube.grid_um;
+  auto solver = std::make_unique<lattice::FluidSolver>(
+      lattice::LatticeGrid(grid.nx, grid.ny, grid.nz), parameters);
+  for (std::size_t node = 0; node < tube.solid_mask.size(); ++node) {
+    if (tube.solid_mask[node] == geometry::kSolid) solver->set_wall(node);
+  }
+  solver->set_wall_links(geometry::wall_link_fractions(tube.wall, grid, tube.solid_mask));
+  return solver;
+}
+
+// Volumetric flow rate along x, lattice units: the sum of u_x over the fluid nodes per slice.
+double flow_rate_lu(const lattice::FluidSolver& fluid) {
+  const auto& mask = fluid.solid_mask();
+  const auto& ux = fluid.velocity()[0];
+  double sum = 0.0;
+  for (std::size_t node = 0; node < ux.size(); ++node) {
+    if (mask[node] == 0) sum += ux[node];
+  }
+  return sum / fluid.grid().nx();
+}
+
+double radial_um(const Vec3& position) { return std::hypot(position.y(), position.z()); }
+
+// R - the mean over (x, angle) bins of the largest vertex radius in the bin; the fraction of
+// bins that held a vertex.
+std::pair<double, double> cell_free_layer_um(const coupling::CoupledSimulation& simulation,
+                                             double radius_um, double length_um) {
+  const int slices = std::max(1, static_cast<int>(std::round(length_um / kLayerBinUm)));
+  const int sectors =
+      std::max(4, static_cast<int>(std::round(2.0 * std::numbers::pi * radius_um / kLayerBinUm)));
+  std::vector<double> outermost(static_cast<std::size_t>(slices * sectors), -1.0);
+  for (std::size_t c = 0; c < simulation.cells().size(); ++c) {
+    for (const Vec3& position : simulation.positions_now_um(c)) {
+      const double x = position.x() - length_um * std::floor(position.x() / length_um);
+      const int slice = std::min(slices - 1, static_cast<int>(x / length_um * slices));
+      const double angle = std::atan2(position.z(), position.y()) + std::numbers::pi;
+      const int sector = std::min(sectors - 1, static_cast<int>(angle / (2.0 * std::numbers::pi) *
+                                                                sectors));
+      auto& bin = outermost[static_cast<std::size_t>(slice * sectors + sector)];
+      bin = std::max(bin, radial_um(position));
+    }
+  }
+  double sum = 0.0;
+  std::size_t populated = 0;
+  for (const double r : outermost) {
+    if (r < 0.0) continue;
+    sum += r;
+    ++populated;
+  }
+  if (populated == 0) return {radius_um, 0.0};
+  return {radius_um - sum / static_cast<double>(populated),
+          static_cast<double>(populated) / static_cast<double>(outermost.size())};
+}
+
+class SuspensionRecorder {
+ public:
+  SuspensionRecorder(SuspensionRun& run, const SuspensionSettings& settings,
+                     std::vector<double> cell_volumes_um3, double plasma_flow_lu)
+      : run_(run),
+        settings_(settings),
+        cell_volumes_um3_(std::move(cell_volumes_um3)),
+        plasma_flow_lu_(plasma_flow_lu) {}
+
+  void operator()(const coupling::CoupledSimulation& simulation) {
+    const auto& units = simulation.units();
+    const double dx_um = simulation.frame().dx_um;
+    const double flow_lu = flow_rate_lu(simulation.fluid());
+    const double um3_per_s = dx_um * dx_um * dx_um / simulation.frame().dt_s;
+    const double radius_um = 0.5 * settings_.tube_diameter_um;
+    const double lumen_um3 = std::numbers::pi * radius_um * radius_um * settings_.tube_length_um;
+
+    SuspensionSample sample;
+    sample.time_s = simulation.time_s();
+    sample.flow_rate_um3_per_s = flow_lu * um3_per_s;
+    sample.relative_apparent_viscosity = plasma_flow_lu_ / flow_lu;
+    double volume_um3 = 0.0;
+    double volume_flux_um4_per_s = 0.0;
+    for (std::size_t c = 0; c < simulation.cells().size(); ++c) {
+      const auto& cell = simulation.cell(c);
+      const double velocity_m_per_s = units.to_physical(PhysicalUnit::velocity_m_per_s,
+                                                        mean_velocity(cell.velocities_lu()).x());
+      volume_um3 += cell_volumes_um3_[c];
+      volume_flux_um4_per_s += cell_volumes_um3_[c] * velocity_m_per_s * 1e6;
+      const Vec3 centroid_um = simulation.frame().to_um(cell.centroid_lu());
+      run_.cell_samples.push_back({sample.time_s, c, centroid_um, radial_um(centroid_um),
+                                   velocity_m_per_s, deformation_index(cell.positions_lu())});
+    }
+    sample.tube_hematocrit = volume_um3 / lumen_um3;
+    sample.discharge_hematocrit =
+        volume_flux_um4_per_s / (sample.flow_rate_um3_per_s * settings_.tube_length_um);
+    std::tie(sample.cell_free_layer_um, sample.populated_bin_fraction) =
+        cell_free_layer_um(simulation, radius_um, settings_.tube_length_um);
+    sample.close_contact_pairs = simulation.contact_statistics().close_pairs;
+    run_.samples.push_back(sample);
+  }
+
+ private:
+  SuspensionRun& run_;
+  const SuspensionSettings& settings_;
+  std::vector<double> cell_volumes_um3_;
+  double plasma_flow_lu_;
+};
+
+SuspensionAverages averages_of(const std::vector<SuspensionSample>& samples, double end_s,
+                               double fraction) {
+  SuspensionAverages averages;
+  const double from_s = end_s * (1.0 - fraction);
+  std::vector<double> viscosities;
+  for (const auto& sample : samples) {
+    if (sample.time_s < from_s || sample.time_s == 0.0) continue;
+    ++averages.samples;
+    viscosities.push_back(sample.relative_apparent_viscosity);
+    averages.relative_apparent_viscosity += sample.relative_apparent_viscosity;
+    averages.tube_hematocrit += sample.tube_hematocrit;
+    averages.discharge_hematocrit += sample.discharge_hematocrit;
+    averages.cell_free_layer_um += sample.cell_free_layer_um;
+  }
+  if (averages.samples == 0) return averages;
+  const double n = static_cast<double>(averages.samples);
+  averages.relative_apparent_viscosity /= n;
+  averages.tube_hematocrit /= n;
+  averages.discharge_hematocrit /= n;
+  averages.cell_free_layer_um /= n;
+  double squares = 0.0;
+  for (const double v : viscosities) {
+    squares += (v - averages.relative_apparent_viscosity) *
+               (v - averages.relative_apparent_viscosity);
+  }
+  averages.relative_apparent_viscosity_sd = n > 1 ? std::sqrt(squares / (n - 1.0)) : 0.0;
+  return averages;
+}
+
+std::size_t interval_steps(const units::UnitConverter& units, double interval_s) {
+  const double steps = std::round(units.to_lattice(PhysicalUnit::time_s, interval_s));
+  return std::max<std::size_t>(1, static_cast<std::size_t>(steps));
+}
+
+}  // namespace
+
+std::vector<std::size_t> cell_counts_for(double hematocrit, double lumen_volume_um3,
+                                         std::span<const double> fractions,
+                                         std::span<const double> cell_volumes_um3) {
+  double mean_volume_um3 = 0.0;
+  for (std::size_t m = 0; m < fractions.size(); ++m) {
+    mean_volume_um3 += fractions[m] * cell_volumes_um3[m];
+  }
+  const auto total =
+      static_cast<std::size_t>(std::llround(hematocrit * lumen_volume_um3 / mean_volume_um3));
+  if (total == 0) {
+    throw InputError("suspension.hematocrit",
+                     format_number(hematocrit) + " puts no whole cell in the tube (" +
+                         format_number(lumen_volume_um3) + " um^3); raise it or lengthen the tube");
+  }
+  // Largest remainders: floors first, then one more to the largest fractional parts (ties to the
+  // earlier morphology).
+  std::vector<std::size_t> counts;
+  std::vector<std::pair<double, std::size_t>> remainders;
+  std::size_t assigned = 0;
+  for (std::size_t m = 0; m < fractions.size(); ++m) {
+    const double exact = fractions[m] * static_cast<double>(total);
+    counts.push_back(static_cast<std::size_t>(std::floor(exact)));
+    assigned += counts.back();
+    remainders.push_back({-(exact - std::floor(exact)), m});
+  }
+  std::sort(remainders.begin(), remainders.end());
+  for (std::size_t k = 0; assigned < total; ++k, ++assigned) ++counts[remainders[k].second];
+  return counts;
+}
+
+SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
+                             std::span<const std::size_t> cell_morphologies,
+                             const SuspensionPhysics& physics, const SuspensionSettings& settings,
+                             const SuspensionConfigure& configure) {
+  validate(settings);
+  require_contact_reaches_across_edges(morphologies, settings.contact.range_um);
+  const double radius_um = 0.5 * settings.tube_diameter_um;
+  std::vector<mesh::TriangleMesh> meshes;
+  for (const auto& morphology : morphologies) meshes.push_back(morphology.mesh);
+  const Packing packing = pack_cells_in_tube(
+      meshes, cell_morphologies, {radius_um, settings.tube_length_um}, settings.packing);
+
+  SuspensionRun run;
+  run.cell_morphologies.assign(cell_morphologies.begin(), cell_morphologies.end());
+  run.packed_hematocrit = packing.hematocrit;
+  run.packing_iterations = packing.iterations;
+
+  const double dx_um = physics.units.dx_m() * 1e6;
+  TubeLattice tube{geometry::TubeWall({settings.tube_diameter_um, settings.tube_length_um},
+                                      "suspension"),
+                   {},
+                   {}};
+  tube.grid_um = geometry::lattice_around(tube.wall, dx_um);
+  tube.solid_mask = geometry::voxelise(tube.wall, tube.grid_um);
+  physics.units.check_lattice_velocity(2.0 * settings.plasma_mean_velocity_m_per_s,
+                                       "suspension.plasma_mean_velocity_m_per_s (peak velocity)");
+  // Poiseuille: mean velocity U = G R^2 / (8 rho nu), so the force density G = 8 rho nu U / R^2.
+  const double velocity_lu =
+      physics.units.to_lattice(PhysicalUnit::velocity_m_per_s, settings.plasma_mean_velocity_m_per_s);
+  const double radius_lu = radius_um / dx_um;
+  const double body_force_lu =
+      8.0 * physics.units.lattice_kinematic_viscosity() * velocity_lu / (radius_lu * radius_lu);
+  run.pressure_gradient_Pa_per_m =
+      physics.units.to_physical(PhysicalUnit::force_density_N_per_m3, body_force_lu);
+  run.pseudo_shear_rate_per_s =
+      settings.plasma_mean_velocity_m_per_s / (settings.tube_diameter_um * 1e-6);
+
+  auto fluid = tube_fluid(tube, physics.fluid, body_force_lu);
+  const auto steady =
+      fluid->run_to_steady_state({settings.fluid_tolerance, 100, settings.fluid_max_steps});
+  run.fluid_settling_steps = steady.steps;
+  if (!steady.converged) {
+    run.failure = "the plasma alone did not reach its steady state in " +
+                  std::to_string(steady.steps) + " steps";
+    return run;
+  }
+  const double plasma_flow_lu = flow_rate_lu(*fluid);
+  run.plasma_flow_rate_um3_per_s =
+      plasma_flow_lu * dx_um * dx_um * dx_um / physics.units.dt_s();
+
+  coupling::CoupledSimulation simulation(std::move(fluid), physics.units, physics.coupling,
+                                         tube.grid_um.origin_um);
+  std::vector<double> cell_volumes_um3;
+  for (std::size_t c = 0; c < cell_morphologies.size(); ++c) {
+    const auto& morphology = morphologies[cell_morphologies[c]];
+    simulation.add_cell(membrane::MembraneModel(morphology.mesh, morphology.membrane),
+                        packing.positions_um[c]);
+    cell_volumes_um3.push_back(mesh::enclosed_volume_um3(morphology.mesh));
+  }
+  // The wall's push (wall_repulsion.hpp), each cell's at contact its pressure times its area per
+  // vertex.
+  std::vector<WallRepulsion> repulsions;
+  for (const auto& morphology : morphologies) {
+    repulsions.push_back({settings.wall_repulsion_pN_per_um2 *
+                              mesh::surface_area_um2(morphology.mesh) /
+                              static_cast<double>(morphology.mesh.vertex_count()),
+                          settings.wall_repulsion_range_um});
+  }
+  const std::vector<std::size_t> kinds(cell_morphologies.begin(), cell_morphologies.end());
+  simulation.add_external_force([repulsions, kinds, radius_um](std::size_t c,
+                                                               const coupling::Cell& cell,
+                                                               std::span<Vec3> forces_pN) {
+    add_wall_repulsion(
+        cell.positions_um(), [radius_um](double) { return radius_um; }, repulsions[kinds[c]],
+        forces_pN);
+  });
+  simulation.set_cell_contact(settings.contact, "suspension.contact_force_pN");
+  simulation.add_observer({"suspension_samples",
+                           interval_steps(physics.units, settings.sample_interval_s),
+                           SuspensionRecorder(run, settings, cell_volumes_um3, plasma_flow_lu)});
+  simulation.add_stop_criterion(coupling::stop_at_time(settings.duration_s));
+  if (configure) configure(simulation);
+  const auto record_end = [&run, &simulation] {
+    run.steps = simulation.time_step();
+    run.time_s = simulation.time_s();
+    run.close_contact_steps = simulation.close_contact_steps();
+    run.force_capped_steps = simulation.capped_steps_per_cell();
+  };
+  try {
+    run.stop_reason = simulation.run().stop_reason;
+  } catch (const Interrupted& interrupted) {
+    run.interrupted = true;
+    run.stop_reason = run.failure = interrupted.what();
+  } catch (const RuntimeFailure& failure) {
+    run.failure = failure.what();
+  }
+  record_end();
+  run.averages = averages_of(run.samples, run.time_s, settings.averaging_fraction);
+  return run;
+}
+
+}  // namespace rbcsim::cases

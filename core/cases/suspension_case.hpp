@@ -1,0 +1,133 @@
+// Many cells in a straight tube (docs/physics.md, "Suspensions"): the blood-flow experiment of
+// Pries et al. 1992 in a periodic piece of tube.
+//
+//   1. the cells packed to the target hematocrit (suspension_packing.hpp), each a membrane of its
+//      own morphology with its stress-free mesh as reference;
+//   2. the fluid alone (plasma) run to its steady Poiseuille flow under a body force that stands
+//      for the pressure gradient: the force that drives plasma_mean_velocity_m_per_s through the
+//      tube; its flow rate Q_plasma is measured on the lattice, so the discretisation of the wall
+//      cancels in the viscosity ratio;
+//   3. the coupled run under the same force, the cells pushed off the wall (wall_repulsion.hpp)
+//      and off each other (contact/cell_repulsion.hpp), for duration_s.
+//
+// Measured every sample: the flow rate Q; relative apparent viscosity Q_plasma / Q (the same
+// pressure gradient drives both); tube hematocrit (cell volumes over the lumen) and discharge
+// hematocrit sum(V_i u_i) / (Q L) with u_i a cell's mean vertex velocity along the axis; the
+// cell-free layer R - mean over (x, angle) bins of the outermost vertex's radius (bins holding no
+// vertex left out). Each cell's centroid, radial position, axial velocity and deformation index.
+// The averages are over the samples of the last `averaging_fraction` of the run.
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cases/suspension_packing.hpp"
+#include "cases/wall_repulsion.hpp"
+#include "contact/cell_repulsion.hpp"
+#include "coupling/coupled_simulation.hpp"
+#include "membrane/parameters.hpp"
+#include "mesh/triangle_mesh.hpp"
+#include "units/unit_converter.hpp"
+
+namespace rbcsim::cases {
+
+struct SuspensionSettings {
+  double tube_diameter_um = 0.0;
+  double tube_length_um = 0.0;
+  // What the pressure gradient would drive through the tube without cells (mean velocity).
+  double plasma_mean_velocity_m_per_s = 0.0;
+  double duration_s = 0.0;
+  double sample_interval_s = 0.0;
+  double averaging_fraction = 0.5;  // of the run, at its end
+  double wall_repulsion_pN_per_um2 = 20.0;
+  double wall_repulsion_range_um = 0.5;
+  contact::ContactParameters contact{5.0, 0.75};
+  PackingSettings packing;
+  double fluid_tolerance = 1e-6;
+  std::size_t fluid_max_steps = 200000;
+};
+
+// One kind of cell in the suspension: its name, stress-free mesh and membrane (each morphology
+// has its own Table 2 stiffnesses).
+struct SuspensionMorphology {
+  std::string name;
+  mesh::TriangleMesh mesh;
+  membrane::MembraneParameters membrane;
+};
+
+struct SuspensionPhysics {
+  lattice::FluidParameters fluid;
+  coupling::CouplingParameters coupling;
+  units::UnitConverter units;
+};
+
+struct SuspensionSample {
+  double time_s = 0.0;
+  double flow_rate_um3_per_s = 0.0;
+  double relative_apparent_viscosity = 0.0;
+  double tube_hematocrit = 0.0;
+  double discharge_hematocrit = 0.0;
+  double cell_free_layer_um = 0.0;
+  double populated_bin_fraction = 0.0;  // of the (x, angle) bins the layer is measured over
+  std::size_t close_contact_pairs = 0;
+};
+
+struct SuspensionCellSample {
+  double time_s = 0.0;
+  std::size_t cell = 0;
+  Vec3 centroid_um = Vec3::Zero();
+  double radial_position_um = 0.0;
+  double velocity_x_m_per_s = 0.0;
+  double deformation_index = 0.0;
+};
+
+struct SuspensionAverages {
+  std::size_t samples = 0;
+  double relative_apparent_viscosity = 0.0;
+  double relative_apparent_viscosity_sd = 0.0;
+  double tube_hematocrit = 0.0;
+  double discharge_hematocrit = 0.0;
+  double cell_free_layer_um = 0.0;
+};
+
+struct SuspensionRun {
+  std::vector<std::size_t> cell_morphologies;  // per cell, an index into the morphologies
+  double packed_hematocrit = 0.0;
+  std::size_t packing_iterations = 0;
+  double plasma_flow_rate_um3_per_s = 0.0;
+  double pressure_gradient_Pa_per_m = 0.0;
+  double pseudo_shear_rate_per_s = 0.0;  // plasma mean velocity / diameter
+  std::size_t fluid_settling_steps = 0;
+  std::vector<SuspensionSample> samples;
+  std::vector<SuspensionCellSample> cell_samples;
+  SuspensionAverages averages;
+  std::size_t steps = 0;
+  double time_s = 0.0;
+  std::size_t close_contact_steps = 0;
+  std::vector<std::size_t> force_capped_steps;  // per cell
+  std::string stop_reason;
+  std::string failure;
+  bool interrupted = false;
+  bool ok() const { return failure.empty(); }
+};
+
+using SuspensionConfigure = std::function<void(coupling::CoupledSimulation&)>;
+
+// `cell_morphologies` holds one index into `morphologies` per cell. Throws InputError for bad
+// settings, a tube the cells cannot be packed into, or a flow beyond the lattice's Mach limit;
+// runtime failures end the run with SuspensionRun::failure set.
+SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
+                             std::span<const std::size_t> cell_morphologies,
+                             const SuspensionPhysics& physics, const SuspensionSettings& settings,
+                             const SuspensionConfigure& configure = {});
+
+// The number of cells of each morphology that fills a lumen of volume_um3 to `hematocrit` with
+// number fractions `fractions` (summing to 1): N = round(H V / sum_m f_m V_m) cells, split by
+// largest remainders. Throws InputError naming suspension.hematocrit when N is 0.
+std::vector<std::size_t> cell_counts_for(double hematocrit, double lumen_volume_um3,
+                                         std::span<const double> fractions,
+                                         std::span<const double> cell_volumes_um3);
+
+}  // namespace rbcsim::cases

@@ -1,0 +1,90 @@
+#include "cases/suspension_output.hpp"
+
+namespace rbcsim::cases {
+
+std::vector<std::string> suspension_table_columns() {
+  return {"time_s",
+          "flow_rate_um3_per_s",
+          "relative_apparent_viscosity",
+          "tube_hematocrit",
+          "discharge_hematocrit",
+          "cell_free_layer_um",
+          "populated_bin_fraction",
+          "close_contact_pairs"};
+}
+
+std::vector<double> suspension_table_row(const SuspensionSample& sample) {
+  return {sample.time_s,
+          sample.flow_rate_um3_per_s,
+          sample.relative_apparent_viscosity,
+          sample.tube_hematocrit,
+          sample.discharge_hematocrit,
+          sample.cell_free_layer_um,
+          sample.populated_bin_fraction,
+          static_cast<double>(sample.close_contact_pairs)};
+}
+
+std::vector<std::string> suspension_cell_table_columns() {
+  return {"time_s",        "cell_id",       "morphology_index",   "centroid_x_um",
+          "centroid_y_um", "centroid_z_um", "radial_position_um", "velocity_x_m_per_s",
+          "deformation_index"};
+}
+
+std::vector<double> suspension_cell_table_row(const SuspensionCellSample& sample,
+                                              std::span<const std::size_t> cell_morphologies) {
+  return {sample.time_s,
+          static_cast<double>(sample.cell),
+          static_cast<double>(cell_morphologies[sample.cell]),
+          sample.centroid_um.x(),
+          sample.centroid_um.y(),
+          sample.centroid_um.z(),
+          sample.radial_position_um,
+          sample.velocity_x_m_per_s,
+          sample.deformation_index};
+}
+
+nlohmann::ordered_json suspension_result_section(std::span<const std::string> morphology_names,
+                                                 const SuspensionSettings& settings,
+                                                 const SuspensionRun& run) {
+  nlohmann::ordered_json counts = nlohmann::ordered_json::object();
+  for (const auto& name : morphology_names) counts[name] = 0;
+  for (const std::size_t m : run.cell_morphologies) {
+    counts[morphology_names[m]] = counts[morphology_names[m]].get<int>() + 1;
+  }
+  const auto& a = run.averages;
+  std::size_t capped = 0;
+  for (const std::size_t steps : run.force_capped_steps) capped += steps;
+  return {
+      {"geometry", "tube"},
+      {"tube_diameter_um", settings.tube_diameter_um},
+      {"tube_length_um", settings.tube_length_um},
+      {"cells", run.cell_morphologies.size()},
+      {"cells_per_morphology", counts},
+      {"morphologies", morphology_names},
+      {"packed_hematocrit", run.packed_hematocrit},
+      {"packing_iterations", run.packing_iterations},
+      {"plasma_mean_velocity_m_per_s", settings.plasma_mean_velocity_m_per_s},
+      {"pseudo_shear_rate_per_s", run.pseudo_shear_rate_per_s},
+      {"pressure_gradient_Pa_per_m", run.pressure_gradient_Pa_per_m},
+      {"plasma_flow_rate_um3_per_s", run.plasma_flow_rate_um3_per_s},
+      {"averaging_samples", a.samples},
+      {"relative_apparent_viscosity", a.relative_apparent_viscosity},
+      {"relative_apparent_viscosity_sd", a.relative_apparent_viscosity_sd},
+      {"tube_hematocrit", a.tube_hematocrit},
+      {"discharge_hematocrit", a.discharge_hematocrit},
+      {"tube_to_discharge_hematocrit",
+       a.discharge_hematocrit > 0.0 ? a.tube_hematocrit / a.discharge_hematocrit : 0.0},
+      {"cell_free_layer_um", a.cell_free_layer_um},
+      {"contact_force_pN", settings.contact.force_at_contact_pN},
+      {"contact_range_um", settings.contact.range_um},
+      {"close_contact_steps", run.close_contact_steps},
+      {"force_capped_steps", capped},
+      {"fluid_settling_steps", run.fluid_settling_steps},
+      {"steps", run.steps},
+      {"time_s", run.time_s},
+      {"stop_reason", run.stop_reason},
+      {"failure", run.failure},
+  };
+}
+
+}  // namespace rbcsim::cases

@@ -1,0 +1,290 @@
+#include "cases/suspension_packing.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <string>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/interrupt.hpp"
+#include "contact/cell_repulsion.hpp"
+#include "mesh/geometry.hpp"
+#include "mesh/transform.hpp"
+
+namespace rbcsim::cases {
+namespace {
+
+// Per iteration a cell moves at most this fraction of the cell gap (and its farthest vertex
+// turns at most as far): small enough that no surface can pass through another between two
+// overlap checks.
+constexpr double kStepFraction = 0.1;
+constexpr double kPushReach = 1.25;
+
+struct RigidCell {
+  std::size_t prototype = 0;
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();
+  Vec3 centre_um = Vec3::Zero();
+};
+
+// A prototype centred on its solid centroid, with its largest vertex distance from there.
+struct Prototype {
+  std::vector<Vec3> offsets_um;
+  double reach_um = 0.0;
+  double volume_um3 = 0.0;
+};
+
+Prototype centred(const mesh::TriangleMesh& mesh) {
+  Prototype prototype;
+  const Vec3 centroid = mesh::solid_centroid_um(mesh);
+  for (const Vec3& position : mesh.positions_um) {
+    prototype.offsets_um.push_back(position - centroid);
+    prototype.reach_um = std::max(prototype.reach_um, (position - centroid).norm());
+  }
+  prototype.volume_um3 = mesh::enclosed_volume_um3(mesh);
+  return prototype;
+}
+
+// Shoemake's uniformly random rotation from three uniform numbers.
+Eigen::Quaterniond random_orientation(std::mt19937& generator) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double u1 = unit(generator);
+  const double u2 = unit(generator);
+  const double u3 = unit(generator);
+  const double two_pi = 2.0 * std::numbers::pi;
+  return Eigen::Quaterniond(std::sqrt(u1) * std::cos(two_pi * u3),
+                            std::sqrt(1.0 - u1) * std::sin(two_pi * u2),
+                            std::sqrt(1.0 - u1) * std::cos(two_pi * u2),
+                            std::sqrt(u1) * std::sin(two_pi * u3));
+}
+
+Vec3 random_place(std::mt19937& generator, const PackingTube& tube, double clear_radius_um) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double x = tube.length_um * unit(generator);
+  const double r = std::max(tube.radius_um - clear_radius_um, 0.0) * std::sqrt(unit(generator));
+  const double angle = 2.0 * std::numbers::pi * unit(generator);
+  return {x, r * std::cos(angle), r * std::sin(angle)};
+}
+
+class Packer {
+ public:
+  Packer(std::span<const mesh::TriangleMesh> meshes, std::span<const std::size_t> cell_prototypes,
+         const PackingTube& tube, const PackingSettings& settings)
+      : tube_(tube), settings_(settings) {
+    for (const auto& mesh : meshes) prototypes_.push_back(centred(mesh));
+    std::mt19937 generator(settings.seed);
+    for (const std::size_t p : cell_prototypes) {
+      RigidCell cell;
+      cell.prototype = p;
+      cell.orientation = random_orientation(generator);
+      cell.centre_um = random_place(generator, tube, kStartScale * prototypes_.at(p).reach_um);
+      cells_.push_back(cell);
+      for (std::size_t v = 0; v < prototypes_[p].offsets_um.size(); ++v) {
+        owners_.push_back(static_cast<std::uint32_t>(cells_.size() - 1));
+      }
+    }
+  }
+
+  // One push of every overlapping cell; whether any overlapped.
+  bool push_apart(double scale) {
+    place(scale);
+    std::vector<Vec3> pushes(positions_.size(), Vec3::Zero());
+    // The pushes reach a little beyond the gap, so that a pair just inside it is still pushed
+    // firmly (the contact law vanishes at its range).
+    const auto statistics = contact::add_cell_contact_forces(
+        positions_, owners_, {1.0, kPushReach * settings_.cell_gap_um},
+        contact::PeriodicBox{{tube_.length_um, 0.0, 0.0}}, pushes, list_);
+    bool overlap = statistics.closest_um < settings_.cell_gap_um;
+    const double wall_limit_um = tube_.radius_um - settings_.wall_gap_um;
+    for (std::size_t v = 0; v < positions_.size(); ++v) {
+      const Vec3& position = positions_[v];
+      const double r = std::hypot(position.y(), position.z());
+      if (r <= wall_limit_um) continue;
+      overlap = true;
+      pushes[v] -= ((r - wall_limit_um) / settings_.wall_gap_um + 0.1) *
+                   Vec3(0.0, position.y(), position.z()) / r;
+    }
+    if (overlap) move(scale, pushes);
+    return overlap;
+  }
+
+  Packing result(std::size_t iterations) const {
+    Packing packing;
+    packing.iterations = iterations;
+    double volume_um3 = 0.0;
+    std::size_t offset = 0;
+    for (const auto& cell : cells_) {
+      const auto count = prototypes_[cell.prototype].offsets_um.size();
+      packing.positions_um.emplace_back(positions_.begin() + static_cast<std::ptrdiff_t>(offset),
+                                        positions_.begin() +
+                                            static_cast<std::ptrdiff_t>(offset + count));
+      offset += count;
+      volume_um3 += prototypes_[cell.prototype].volume_um3;
+    }
+    packing.hematocrit = volume_um3 / lumen_volume_um3();
+    return packing;
+  }
+
+  double lumen_volume_um3() const {
+    return std::numbers::pi * tube_.radius_um * tube_.radius_um * tube_.length_um;
+  }
+
+  double hematocrit_at(double scale) const {
+    double volume_um3 = 0.0;
+    for (const auto& cell : cells_) volume_um3 += prototypes_[cell.prototype].volume_um3;
+    return scale * scale * scale * volume_um3 / lumen_volume_um3();
+  }
+
+  void place(double scale) {
+    positions_.clear();
+    for (const auto& cell : cells_) {
+      const Eigen::Matrix3d rotation = cell.orientation.toRotationMatrix();
+      for (const Vec3& offset : prototypes_[cell.prototype].offsets_um) {
+        positions_.push_back(cell.centre_um + scale * (rotation * offset));
+      }
+    }
+  }
+
+ private:
+  // Each cell moves along its net push and turns about its net torque, both limited to
+  // kStepFraction of the gap at its farthest vertex.
+  void move(double scale, const std::vector<Vec3>& pushes) {
+    const double step_um = kStepFraction * settings_.cell_gap_um;
+    std::size_t offset = 0;
+    for (auto& cell : cells_) {
+      const auto& prototype = prototypes_[cell.prototype];
+      Vec3 force = Vec3::Zero();
+      Vec3 torque = Vec3::Zero();
+      std::size_t pushed = 0;
+      for (std::size_t v = 0; v < prototype.offsets_um.size(); ++v) {
+        const Vec3& push = pushes[offset + v];
+        if (push == Vec3::Zero()) continue;
+        ++pushed;
+        force += push;
+        torque += (positions_[offset + v] - cell.centre_um).cross(push);
+      }
+      offset += prototype.offsets_um.size();
+      if (pushed == 0) continue;
+      // A net push of one full-strength pair or more moves the cell a whole step; a weaker one
+      // proportionally less, so that balanced cells settle instead of jittering.
+      cell.centre_um += step_um * force / std::max(1.0, force.norm());
+      cell.centre_um.x() -= tube_.length_um * std::floor(cell.centre_um.x() / tube_.length_um);
+      const double arm_um = scale * prototype.reach_um;
+      const double torque_pushes = torque.norm() / arm_um;
+      const double angle = step_um / arm_um * std::min(1.0, torque_pushes);
+      if (angle > 0.0) {
+        cell.orientation =
+            (Eigen::AngleAxisd(angle, torque.normalized()) * cell.orientation).normalized();
+      }
+    }
+  }
+
+  PackingTube tube_;
+  PackingSettings settings_;
+  std::vector<Prototype> prototypes_;
+  std::vector<RigidCell> cells_;
+  std::vector<std::uint32_t> owners_;
+  std::vector<Vec3> positions_;
+  contact::CellList list_;
+};
+
+// A vertex of one cell inside another: the packing moved a surface through another one. Only
+// the vertices of A within reach of B's centre can be inside B.
+void require_no_piercing(const Packing& packing, std::span<const mesh::TriangleMesh> prototypes,
+                         std::span<const std::size_t> cell_prototypes, double length_um) {
+  const auto count = packing.positions_um.size();
+  std::vector<Vec3> centres;
+  std::vector<double> reaches;
+  for (const auto& positions : packing.positions_um) {
+    Vec3 centre = Vec3::Zero();
+    for (const Vec3& position : positions) centre += position;
+    centre /= static_cast<double>(positions.size());
+    double reach = 0.0;
+    for (const Vec3& position : positions) reach = std::max(reach, (position - centre).norm());
+    centres.push_back(centre);
+    reaches.push_back(reach);
+  }
+  const contact::PeriodicBox box{{length_um, 0.0, 0.0}};
+  std::vector<std::ptrdiff_t> pierced(count, -1);
+  const auto signed_count = static_cast<std::ptrdiff_t>(count);
+#pragma omp parallel for schedule(dynamic)
+  for (std::ptrdiff_t a = 0; a < signed_count; ++a) {
+    for (std::size_t b = 0; b < count && pierced[a] < 0; ++b) {
+      const auto ua = static_cast<std::size_t>(a);
+      if (ua == b) continue;
+      // B's image nearest to A.
+      const Vec3 shift = centres[ua] - centres[b] - box.minimum_image(centres[ua] - centres[b]);
+      if ((centres[ua] - centres[b] - shift).norm() > reaches[ua] + reaches[b]) continue;
+      std::vector<Vec3> image = packing.positions_um[b];
+      for (auto& position : image) position += shift;
+      const Vec3 centre_b = centres[b] + shift;
+      for (const Vec3& point : packing.positions_um[ua]) {
+        if ((point - centre_b).norm() > reaches[b]) continue;
+        if (surface_contains(image, prototypes[cell_prototypes[b]], point)) {
+          pierced[a] = static_cast<std::ptrdiff_t>(b);
+          break;
+        }
+      }
+    }
+  }
+  for (std::size_t a = 0; a < count; ++a) {
+    if (pierced[a] >= 0) {
+      throw RuntimeFailure("packing: cell " + std::to_string(a) + " pierces cell " +
+                           std::to_string(pierced[a]));
+    }
+  }
+}
+
+}  // namespace
+
+bool surface_contains(std::span<const Vec3> positions_um, const mesh::TriangleMesh& topology,
+                      const Vec3& point_um) {
+  // Van Oosterom & Strackee's solid angle of each triangle seen from the point.
+  double solid_angle = 0.0;
+  for (const auto& triangle : topology.triangles) {
+    const Vec3 a = positions_um[triangle[0]] - point_um;
+    const Vec3 b = positions_um[triangle[1]] - point_um;
+    const Vec3 c = positions_um[triangle[2]] - point_um;
+    const double la = a.norm();
+    const double lb = b.norm();
+    const double lc = c.norm();
+    const double numerator = a.dot(b.cross(c));
+    const double denominator = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
+    solid_angle += 2.0 * std::atan2(numerator, denominator);
+  }
+  return std::abs(solid_angle) > 2.0 * std::numbers::pi;
+}
+
+Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
+                           std::span<const std::size_t> cell_prototypes, const PackingTube& tube,
+                           const PackingSettings& settings) {
+  Packer packer(prototypes, cell_prototypes, tube, settings);
+  double scale = kStartScale;
+  double clear_scale = 0.0;  // the largest at which no cell overlapped
+  std::size_t iteration = 0;
+  for (; iteration < settings.max_iterations; ++iteration) {
+    throw_if_interrupted();  // packing a large suspension takes a while
+    if (packer.push_apart(scale)) continue;
+    clear_scale = scale;
+    if (scale == 1.0) break;
+    scale = std::min(1.0, scale + kScaleStep);
+  }
+  if (iteration == settings.max_iterations) {
+    throw InputError("suspension.hematocrit",
+                     "could not pack " + std::to_string(cell_prototypes.size()) +
+                         " cells into the tube: after " + std::to_string(iteration) +
+                         " iterations they were clear only at " + format_number(clear_scale) +
+                         " of their size, hematocrit " +
+                         format_number(packer.hematocrit_at(clear_scale)) +
+                         " (target " + format_number(packer.hematocrit_at(1.0)) +
+                         "); lower the hematocrit or widen/lengthen the tube");
+  }
+  packer.place(1.0);
+  auto packing = packer.result(iteration);
+  require_no_piercing(packing, prototypes, cell_prototypes, tube.length_um);
+  return packing;
+}
+
+}  // namespace rbcsim::cases

@@ -1,0 +1,60 @@
+// Cells packed into a straight tube to a target hematocrit (docs/physics.md, "Suspensions"):
+// force-biased shrink-then-grow packing of the true cell meshes as rigid bodies.
+//
+//   1. Every cell starts at a reduced scale (kStartScale of its size), at a seeded random place in
+//      the lumen and a uniformly random orientation, and they are spread apart rigidly (below);
+//   2. then, repeatedly: overlapping cells (two vertices of different cells closer than
+//      cell_gap_um, the contact's range, across the tube's periodic x; a vertex closer than
+//      wall_gap_um to the wall) push each other apart as rigid bodies, each moved along its net
+//      push and turned by its net torque, a small fraction of the gap per iteration; once no
+//      cell overlaps, all cells grow by kScaleStep, until they are full size and clear.
+//
+// The hematocrit reached is measured from the placed meshes' own volumes over the lumen's
+// pi R^2 L. Cells that cannot be made to clear at full size within max_iterations are an error
+// naming the scale and hematocrit reached, never a silently lower hematocrit.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "common/vec3.hpp"
+#include "mesh/triangle_mesh.hpp"
+
+namespace rbcsim::cases {
+
+struct PackingTube {
+  double radius_um = 0.0;
+  double length_um = 0.0;  // periodic along x over [0, length); the axis at y = z = 0
+};
+
+struct PackingSettings {
+  double cell_gap_um = 0.75;  // no two vertices of different cells closer
+  double wall_gap_um = 0.5;   // no vertex closer to the wall
+  unsigned seed = 1;
+  std::size_t max_iterations = 40000;
+};
+
+// The cells as placed: one vertex array per cell, in the order of `cell_prototypes`.
+struct Packing {
+  std::vector<std::vector<Vec3>> positions_um;
+  double hematocrit = 0.0;  // sum of the placed meshes' volumes / (pi R^2 L)
+  std::size_t iterations = 0;
+};
+
+inline constexpr double kStartScale = 0.4;
+inline constexpr double kScaleStep = 0.01;
+
+// Packs one cell per entry of `cell_prototypes` (an index into `prototypes`, the stress-free
+// meshes). Throws InputError naming suspension.hematocrit when the cells cannot all be placed
+// clear of each other and the wall, with the scale and hematocrit reached.
+Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
+                           std::span<const std::size_t> cell_prototypes, const PackingTube& tube,
+                           const PackingSettings& settings);
+
+// Whether `point_um` lies inside the closed surface (its winding number, the solid angle the
+// triangles subtend over 4 pi, rounds to 1): used to check that no packed cell pierces another.
+bool surface_contains(std::span<const Vec3> positions_um, const mesh::TriangleMesh& topology,
+                      const Vec3& point_um);
+
+}  // namespace rbcsim::cases

@@ -1,0 +1,84 @@
+#include "cases/suspension_case.hpp"
+#include "config/options/option_areas.hpp"
+
+namespace rbcsim::config {
+namespace {
+
+// The defaults come from the case's settings struct: one source of truth.
+const cases::SuspensionSettings kSuspensionDefaults{};
+
+}  // namespace
+
+void add_suspension_options(OptionTable& table) {
+  table
+      .add_number("suspension.hematocrit", "", 0.0,
+                  "Tube hematocrit the cells are packed to in `capillary --geometry tube` "
+                  "(cell volume over lumen volume); 0: no suspension.")
+      .at_least(0.0)
+      .at_most(0.7);
+  table.add_string("suspension.mix", "",
+                   "Morphologies of the suspension's cells, as number fractions summing to 1: "
+                   "discocyte=0.8,echinocyte-III=0.2. Empty: all of the configured morphology.");
+  table.add_number("suspension.tube_diameter_um", "um", 20.0, "Diameter of the straight tube.")
+      .above(0.0);
+  table
+      .add_number("suspension.tube_length_um", "um", 40.0,
+                  "Length of the tube, periodic along its axis (x).")
+      .above(0.0);
+  table
+      .add_number("suspension.plasma_mean_velocity_m_per_s", "m/s", 2e-3,
+                  "Drive: the body force (pressure gradient) that would move plasma alone through "
+                  "the tube at this mean velocity (the default is a pseudo-shear rate U/D of "
+                  "100 1/s in the 20 um tube, within Pries et al. 1992's high-shear data).")
+      .above(0.0);
+  table
+      .add_number("suspension.duration_s", "s", 0.02,
+                  "Simulated (physical) time of the coupled run after the plasma has settled.")
+      .above(0.0);
+  table
+      .add_number("suspension.sample_interval_s", "s", 2e-4,
+                  "Interval of the whole-flow and per-cell samples.")
+      .above(0.0);
+  table
+      .add_number("suspension.averaging_fraction", "", kSuspensionDefaults.averaging_fraction,
+                  "The reported averages are over this last fraction of the run.")
+      .above(0.0)
+      .at_most(1.0);
+  table
+      .add_number("suspension.contact_force_pN", "pN",
+                  kSuspensionDefaults.contact.force_at_contact_pN,
+                  "Cell-cell repulsion between two vertices of different cells at zero distance, "
+                  "falling as (1 - d/range)^2.")
+      .at_least(0.0);
+  table
+      .add_number("suspension.contact_range_um", "um", kSuspensionDefaults.contact.range_um,
+                  "Range of the cell-cell repulsion; at least the membranes' longest edge.")
+      .above(0.0);
+  table
+      .add_number("suspension.wall_repulsion_pN_per_um2", "pN/um^2",
+                  kSuspensionDefaults.wall_repulsion_pN_per_um2,
+                  "The tube wall's push on the membrane at contact, as a pressure (as "
+                  "capillary.wall_repulsion_pN_per_um2).")
+      .at_least(0.0);
+  table
+      .add_number("suspension.wall_repulsion_range_um", "um",
+                  kSuspensionDefaults.wall_repulsion_range_um,
+                  "Distance from the wall within which its repulsion acts.")
+      .above(0.0);
+  table.add_integer("suspension.seed", "", 1, "Seed of the packing's random places and turns.")
+      .at_least(0);
+  table
+      .add_integer("suspension.packing_max_iterations", "",
+                   static_cast<int>(kSuspensionDefaults.packing.max_iterations),
+                   "Packing gives up (exit 2, with the hematocrit it reached) after this many "
+                   "push-apart iterations.")
+      .at_least(1);
+  table
+      .add_number("suspension.max_reynolds_number", "", 0.1,
+                  "Time-scale compression (as capillary.time_scale_compression): plasma viscosity "
+                  "divided and velocity multiplied by one factor, at equal capillary number, up to "
+                  "this Reynolds number (U D / nu); times are reported physical.")
+      .above(0.0);
+}
+
+}  // namespace rbcsim::config

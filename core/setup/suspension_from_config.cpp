@@ -1,0 +1,155 @@
+#include "setup/suspension_from_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "setup/cell_from_config.hpp"
+#include "setup/membrane_from_config.hpp"
+
+namespace rbcsim::setup {
+namespace {
+
+constexpr const char* kMixOption = "suspension.mix";
+
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+}  // namespace
+
+SuspensionMix suspension_mix_from(const config::Config& config) {
+  SuspensionMix mix;
+  const auto text = config.string(kMixOption);
+  if (trimmed(text).empty()) {
+    mix.names.push_back(config.string("morphology"));
+    mix.fractions.push_back(1.0);
+    return mix;
+  }
+  std::stringstream entries(text);
+  std::string entry;
+  double sum = 0.0;
+  while (std::getline(entries, entry, ',')) {
+    const auto equals = entry.find('=');
+    if (equals == std::string::npos) {
+      throw InputError(kMixOption, "'" + trimmed(entry) + "' is not morphology=fraction");
+    }
+    const auto name = trimmed(entry.substr(0, equals));
+    const auto value = trimmed(entry.substr(equals + 1));
+    double fraction = 0.0;
+    try {
+      std::size_t used = 0;
+      fraction = std::stod(value, &used);
+      if (used != value.size()) throw std::invalid_argument(value);
+    } catch (const std::exception&) {
+      throw InputError(kMixOption, "'" + value + "' (for " + name + ") is not a number");
+    }
+    if (!(fraction > 0.0 && fraction <= 1.0)) {
+      throw InputError(kMixOption, "the fraction of " + name + " must lie in (0, 1]");
+    }
+    if (std::find(mix.names.begin(), mix.names.end(), name) != mix.names.end()) {
+      throw InputError(kMixOption, name + " is listed twice");
+    }
+    // A morphology is known when it resolves (it has a Table 2 overlay).
+    try {
+      (void)config::resolve_config({.morphology = name});
+    } catch (const InputError&) {
+      throw InputError(kMixOption, "unknown morphology '" + name + "'");
+    }
+    mix.names.push_back(name);
+    mix.fractions.push_back(fraction);
+    sum += fraction;
+  }
+  if (std::abs(sum - 1.0) > 1e-6) {
+    throw InputError(kMixOption, "the fractions sum to " + format_number(sum) + ", not 1");
+  }
+  return mix;
+}
+
+cases::SuspensionSettings suspension_settings_from(const config::Config& config) {
+  cases::SuspensionSettings settings;
+  settings.tube_diameter_um = config.number("suspension.tube_diameter_um");
+  settings.tube_length_um = config.number("suspension.tube_length_um");
+  settings.plasma_mean_velocity_m_per_s = config.number("suspension.plasma_mean_velocity_m_per_s");
+  settings.duration_s = config.number("suspension.duration_s");
+  settings.sample_interval_s = config.number("suspension.sample_interval_s");
+  settings.averaging_fraction = config.number("suspension.averaging_fraction");
+  settings.wall_repulsion_pN_per_um2 = config.number("suspension.wall_repulsion_pN_per_um2");
+  settings.wall_repulsion_range_um = config.number("suspension.wall_repulsion_range_um");
+  settings.contact = {config.number("suspension.contact_force_pN"),
+                      config.number("suspension.contact_range_um")};
+  settings.packing.cell_gap_um = settings.contact.range_um;
+  settings.packing.wall_gap_um = settings.wall_repulsion_range_um;
+  settings.packing.seed = static_cast<unsigned>(config.integer("suspension.seed"));
+  settings.packing.max_iterations =
+      static_cast<std::size_t>(config.integer("suspension.packing_max_iterations"));
+  settings.fluid_tolerance = config.number("capillary.fluid_tolerance");
+  settings.fluid_max_steps = static_cast<std::size_t>(config.integer("capillary.fluid_max_steps"));
+  return settings;
+}
+
+std::vector<cases::SuspensionMorphology> suspension_morphologies_from(
+    const config::ConfigRequest& request, const SuspensionMix& mix, double compression_factor) {
+  std::vector<cases::SuspensionMorphology> morphologies;
+  for (const auto& name : mix.names) {
+    auto own = request;
+    own.morphology = name;
+    auto config = config::resolve_config(own);
+    config = config.with("membrane.viscosity_Pa_s_um",
+                         config.number("membrane.viscosity_Pa_s_um") / compression_factor);
+    morphologies.push_back({name, cell_mesh_from(config).mesh, membrane_parameters_from(config)});
+  }
+  return morphologies;
+}
+
+SuspensionCompression suspension_compression_from(const config::Config& config) {
+  SuspensionCompression compression;
+  const double velocity = config.number("suspension.plasma_mean_velocity_m_per_s");
+  const double viscosity = config.number("physics.plasma_kinematic_viscosity_m2_per_s");
+  compression.physical_reynolds_number =
+      velocity * config.number("suspension.tube_diameter_um") * 1e-6 / viscosity;
+  compression.simulated_reynolds_number = compression.physical_reynolds_number;
+  const double limit = config.number("suspension.max_reynolds_number");
+  if (compression.physical_reynolds_number >= limit) return compression;
+  compression.factor = std::sqrt(limit / compression.physical_reynolds_number);
+  compression.simulated_reynolds_number = limit;
+  return compression;
+}
+
+config::Config compressed_suspension_config(const config::Config& config, double s) {
+  if (s == 1.0) return config;
+  auto compressed =
+      config
+          .with("physics.plasma_kinematic_viscosity_m2_per_s",
+                config.number("physics.plasma_kinematic_viscosity_m2_per_s") / s)
+          .with("suspension.plasma_mean_velocity_m_per_s",
+                config.number("suspension.plasma_mean_velocity_m_per_s") * s)
+          .with("membrane.viscosity_Pa_s_um", config.number("membrane.viscosity_Pa_s_um") / s);
+  for (const char* time : {"suspension.duration_s", "suspension.sample_interval_s",
+                           "output.membrane_interval_s", "output.fluid_interval_s"}) {
+    compressed = compressed.with(time, config.number(time) / s);
+  }
+  return compressed;
+}
+
+void to_physical_units(cases::SuspensionRun& run, double s) {
+  if (s == 1.0) return;
+  for (auto& sample : run.samples) {
+    sample.time_s *= s;
+    sample.flow_rate_um3_per_s /= s;
+  }
+  for (auto& sample : run.cell_samples) {
+    sample.time_s *= s;
+    sample.velocity_x_m_per_s /= s;
+  }
+  run.time_s *= s;
+  run.plasma_flow_rate_um3_per_s /= s;
+  run.pseudo_shear_rate_per_s /= s;
+  // G = 8 mu U / R^2 with mu / s and U s: unchanged.
+}
+
+}  // namespace rbcsim::setup

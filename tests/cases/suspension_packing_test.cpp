@@ -1,0 +1,91 @@
+// The packing of cells into a tube (cases/suspension_packing.hpp): clear of each other and of the
+// wall, the hematocrit from the meshes' own volumes, and one clear error when it cannot be done.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "cases/suspension_case.hpp"
+#include "cases/suspension_packing.hpp"
+#include "common/errors.hpp"
+#include "mesh/geometry.hpp"
+#include "mesh/icosphere.hpp"
+#include "mesh/import.hpp"
+
+namespace rbcsim::cases {
+namespace {
+
+mesh::TriangleMesh shipped_mesh(const std::string& name) {
+  return mesh::import_mesh(std::string(RBCSIM_SOURCE_DIR) + "/meshes/" + name + "_n3.stl").mesh;
+}
+
+// Every vertex pair of different cells (nearest periodic image along x) at least the gap apart,
+// every vertex at least the wall gap inside the wall.
+void expect_clear(const Packing& packing, const PackingTube& tube, const PackingSettings& settings) {
+  for (std::size_t a = 0; a < packing.positions_um.size(); ++a) {
+    for (const Vec3& p : packing.positions_um[a]) {
+      EXPECT_LE(std::hypot(p.y(), p.z()), tube.radius_um - settings.wall_gap_um + 1e-12);
+      for (std::size_t b = a + 1; b < packing.positions_um.size(); ++b) {
+        for (const Vec3& q : packing.positions_um[b]) {
+          Vec3 d = p - q;
+          d.x() -= tube.length_um * std::round(d.x() / tube.length_um);
+          ASSERT_GE(d.norm(), settings.cell_gap_um) << "cells " << a << " and " << b;
+        }
+      }
+    }
+  }
+}
+
+TEST(SuspensionPacking, PacksMixedCellsClearOfEachOtherAndTheWall) {
+  const std::vector<mesh::TriangleMesh> prototypes{shipped_mesh("discocyte"),
+                                                   shipped_mesh("stomatocyte-II")};
+  const std::vector<std::size_t> cells{0, 0, 0, 0, 0, 1, 1, 1};
+  const PackingTube tube{8.0, 24.0};
+  const PackingSettings settings{0.75, 0.5, 3, 40000};
+  const auto packing = pack_cells_in_tube(prototypes, cells, tube, settings);
+  ASSERT_EQ(packing.positions_um.size(), cells.size());
+  expect_clear(packing, tube, settings);
+  double volume_um3 = 0.0;
+  for (const std::size_t c : cells) volume_um3 += mesh::enclosed_volume_um3(prototypes[c]);
+  EXPECT_NEAR(packing.hematocrit, volume_um3 / (std::numbers::pi * 64.0 * 24.0), 1e-12);
+  EXPECT_GT(packing.hematocrit, 0.12);
+  // Rigid placement: each cell is its prototype turned and moved (edge lengths kept).
+  const auto& first = packing.positions_um[0];
+  EXPECT_NEAR((first[0] - first[1]).norm(),
+              (prototypes[0].positions_um[0] - prototypes[0].positions_um[1]).norm(), 1e-9);
+}
+
+// Twelve discocytes cannot fit a 6 um tube 12 um long (their volume alone is over the lumen's):
+// an InputError naming the hematocrit, never a packing with fewer cells.
+TEST(SuspensionPacking, RefusesATargetItCannotReach) {
+  const std::vector<mesh::TriangleMesh> prototypes{shipped_mesh("discocyte")};
+  const std::vector<std::size_t> cells(12, 0);
+  try {
+    pack_cells_in_tube(prototypes, cells, {3.0, 12.0}, {0.75, 0.5, 1, 300});
+    FAIL() << "packed";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("suspension.hematocrit"), std::string::npos);
+    EXPECT_NE(std::string(error.what()).find("could not pack 12 cells"), std::string::npos);
+  }
+}
+
+TEST(SuspensionPacking, SurfaceContainsItsInsideOnly) {
+  const auto sphere = mesh::unit_icosphere(3);
+  EXPECT_TRUE(surface_contains(sphere.positions_um, sphere, Vec3(0.1, 0.2, -0.3)));
+  EXPECT_FALSE(surface_contains(sphere.positions_um, sphere, Vec3(1.1, 0.0, 0.0)));
+}
+
+// N = round(H V / mean volume), split by largest remainders.
+TEST(SuspensionPacking, CountsCellsByNumberFractions) {
+  const std::vector<double> fractions{0.7, 0.3};
+  const std::vector<double> volumes{100.0, 50.0};
+  // Mean volume 85: H 0.3 of 2833.33 um^3 is 850 um^3 -> 10 cells, 7 and 3.
+  EXPECT_EQ(cell_counts_for(0.3, 2833.3333, fractions, volumes),
+            (std::vector<std::size_t>{7, 3}));
+  EXPECT_THROW(cell_counts_for(0.01, 1000.0, fractions, volumes), InputError);
+}
+
+}  // namespace
+}  // namespace rbcsim::cases

@@ -1,0 +1,100 @@
+// `rbcsim capillary --geometry tube --hematocrit H`, end to end on a coarse set-up (two
+// 162-vertex cells on dx = 1 um): the run directory (result.json against the schema, the two time
+// series, one ParaView series for all cells with their ids), and bad input.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "io/csv_table.hpp"
+#include "support/run_rbcsim.hpp"
+#include "support/run_result.hpp"
+#include "support/scratch_directory.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using rbcsim::testing::printed_run_result;
+using rbcsim::testing::read_text;
+using rbcsim::testing::run_rbcsim;
+using rbcsim::testing::ScratchDirectory;
+
+// The contact's range must bridge the 162-vertex cells' edges (up to 1.66 um).
+constexpr const char* kCoarseTube =
+    "capillary --geometry tube --diameter-um 10 --length-um 12 --set mesh.subdivisions=2 "
+    "--set mesh.method=parametric --set lattice.spacing_um=1 --set suspension.contact_range_um=1.75 "
+    "--set suspension.duration_s=2e-4 --set suspension.sample_interval_s=2e-5 "
+    "--set output.membrane_interval_s=1e-4 --set output.fluid_interval_s=1e-4 ";
+
+TEST(CliSuspension, WritesTheRunDirectoryOfAMixedSuspension) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const auto result = run_rbcsim(std::string(kCoarseTube) +
+                                     "--hematocrit 0.2 --mix discocyte=0.5,stomatocyte-II=0.5 "
+                                     "--threads 2 --json --output '" + run_dir.string() + "'",
+                                 scratch.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto printed = printed_run_result(result, run_dir, "capillary");
+  const auto& suspension = printed["suspension"];
+  EXPECT_EQ(suspension["cells"], 2);
+  EXPECT_EQ(suspension["cells_per_morphology"]["discocyte"], 1);
+  EXPECT_EQ(suspension["cells_per_morphology"]["stomatocyte-II"], 1);
+  EXPECT_EQ(suspension["time_scale"]["compressed"], true);
+  EXPECT_NEAR(suspension["time_s"].get<double>(), 2e-4, 1e-6);
+  // Cells in the flow hold it back: the plasma flows faster under the same gradient.
+  EXPECT_GT(suspension["relative_apparent_viscosity"].get<double>(), 1.0);
+  EXPECT_EQ(suspension["tube_hematocrit"], suspension["packed_hematocrit"]);
+  EXPECT_EQ(suspension["close_contact_steps"], 0);
+  // The drive: plasma alone at the mean velocity asked for, Q = pi R^2 U (2 mm/s in the 10 um
+  // tube), reported in physical units after the time-scale compression. The lattice resolves
+  // the diameter with 10 nodes; its interpolated walls are within 1 % of Poiseuille there
+  // (tests/lattice/curved_wall_test.cpp: 0.2 % at 20 nodes, second order).
+  EXPECT_NEAR(suspension["plasma_flow_rate_um3_per_s"].get<double>() / (3.14159265358979 * 25.0 * 2000.0),
+              1.0, 0.02);
+
+  const auto flow = rbcsim::io::read_csv_file(run_dir / "suspension_timeseries.csv");
+  const auto time_s = flow.numbers("time_s");
+  ASSERT_GE(time_s.size(), 5u);
+  EXPECT_EQ(time_s.front(), 0.0);
+  const auto cells = rbcsim::io::read_csv_file(run_dir / "cells_timeseries.csv");
+  EXPECT_EQ(cells.numbers("cell_id").size(), 2 * time_s.size());
+  const auto pvd = read_text(run_dir / "cells.pvd");
+  EXPECT_NE(pvd.find("<DataSet"), std::string::npos);
+  EXPECT_FALSE(fs::exists(run_dir / "cell0.pvd"));
+  bool found = false;
+  for (const auto& entry : fs::directory_iterator(run_dir / "vtk")) {
+    if (entry.path().filename().string().rfind("cells_", 0) != 0) continue;
+    const auto vtp = read_text(entry.path());
+    EXPECT_NE(vtp.find("Name=\"cell_id\""), std::string::npos);
+    EXPECT_NE(vtp.find("Name=\"cell_kind\""), std::string::npos);
+    found = true;
+  }
+  EXPECT_TRUE(found);
+}
+
+TEST(CliSuspension, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
+  const ScratchDirectory scratch;
+  const auto out = (scratch.path() / "run").string();
+  for (const auto& [arguments, named] : {
+           std::pair<std::string, std::string>{"--hematocrit 0.2 --mix discocyte=0.5,stomatocyte-II=0.4",
+                                               "suspension.mix"},
+           {"--hematocrit 0.2 --mix discocyte=1,platelet=0", "suspension.mix"},
+           {"--hematocrit 0.7 --set suspension.packing_max_iterations=1500", "could not pack"},
+           {"--hematocrit 0.2 --set suspension.contact_range_um=0.5", "suspension.contact_range_um"},
+       }) {
+    const auto run =
+        run_rbcsim(std::string(kCoarseTube) + arguments + " --output '" + out + "'", scratch.path());
+    EXPECT_EQ(run.exit_code, 2) << arguments << ": " << run.err;
+    EXPECT_NE(run.err.find(named), std::string::npos) << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_FALSE(fs::exists(out)) << arguments;
+  }
+  const auto paper = run_rbcsim("capillary --hematocrit 0.2 --output '" + out + "'", scratch.path());
+  EXPECT_EQ(paper.exit_code, 2);
+  EXPECT_NE(paper.err.find("--geometry tube"), std::string::npos) << paper.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
