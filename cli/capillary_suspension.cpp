@@ -97,8 +97,16 @@ bool wants_suspension(const config::Config& config) {
 
 void run_suspension_command(const config::ConfigRequest& request, const config::Config& config,
                             const CommonOptions& common, const CheckpointOptions& checkpoint) {
-  if (!checkpoint.every.empty() || !checkpoint.resume_directory.empty()) {
+  if (!checkpoint.every.empty()) {
     throw InputError("--checkpoint-every", "suspension runs do not write checkpoints yet");
+  }
+  if (!checkpoint.resume_directory.empty()) {
+    throw InputError("--resume", "suspension runs do not write checkpoints yet");
+  }
+  if (config.integer("capillary.orientations") != 1) {
+    throw InputError("capillary.orientations",
+                     "release orientations are for one cell; a suspension's cells are turned at "
+                     "random (suspension.seed)");
   }
   const auto mix = setup::suspension_mix_from(config);
   const auto compression = setup::suspension_compression_from(config);

@@ -278,8 +278,8 @@ Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
                          " iterations they were clear only at " + format_number(clear_scale) +
                          " of their size, hematocrit " +
                          format_number(packer.hematocrit_at(clear_scale)) +
-                         " (target " + format_number(packer.hematocrit_at(1.0)) +
-                         "); lower the hematocrit or widen/lengthen the tube");
+                         " (the " + std::to_string(cell_prototypes.size()) + " cells at full size: " +
+                         format_number(packer.hematocrit_at(1.0)) + "); lower the hematocrit or widen/lengthen the tube");
   }
   packer.place(1.0);
   auto packing = packer.result(iteration);

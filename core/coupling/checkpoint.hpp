@@ -27,9 +27,10 @@ namespace rbcsim::coupling {
 
 class CoupledSimulation;
 
+// Version 4: the simulation's count of steps with a near contact between cells.
 // Version 3: a capillary sample holds its area strain too (12 numbers, version 2: 10).
 // Version 2: the populations are stored in the kernel's layout (version 1: streamed to natural).
-inline constexpr std::uint32_t kCheckpointVersion = 3;
+inline constexpr std::uint32_t kCheckpointVersion = 4;
 inline constexpr const char* kCheckpointFileName = "checkpoint.bin";
 
 void write_checkpoint(const std::filesystem::path& file, const CoupledSimulation& simulation,

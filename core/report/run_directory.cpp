@@ -85,6 +85,9 @@ RunDirectory read_run_directory(const std::filesystem::path& directory) {
 
   const auto result = run.result_field();
   run.command = result.at("command").string();
+  // A capillary suspension (result.json's "suspension" object) is an experiment of its own: the
+  // capillary section reads one cell's transit. It is reported under "suspension".
+  if (run.command == "capillary" && run.result.contains("suspension")) run.command = "suspension";
   run.morphology = result.at("morphology").string();
   run.status = result.at("status").string();
   if (run.status != "ok" && run.status != "failed" && run.status != "interrupted") {

@@ -15,7 +15,8 @@ namespace rbcsim::report {
 
 struct RunDirectory {
   std::filesystem::path directory;
-  std::string command;     // result.json "command": calibrate, stretch, shear, capillary, ...
+  std::string command;     // result.json "command": calibrate, stretch, shear, capillary, ...;
+                           // "suspension" for a capillary run with a "suspension" object
   std::string morphology;  // result.json "morphology"
   std::string preset;      // config.json "preset"; "-" for runs older than presets
   std::string status;      // result.json "status": "ok", "failed" or "interrupted"

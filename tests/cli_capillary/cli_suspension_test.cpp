@@ -72,6 +72,16 @@ TEST(CliSuspension, WritesTheRunDirectoryOfAMixedSuspension) {
     found = true;
   }
   EXPECT_TRUE(found);
+
+  // `rbcsim report` lists it as a suspension, with its headline numbers, not as a transit.
+  const auto report_dir = scratch.path() / "report";
+  const auto report = run_rbcsim("report '" + run_dir.string() + "' --json --output '" +
+                                     report_dir.string() + "'",
+                                 scratch.path());
+  ASSERT_EQ(report.exit_code, 0) << report.err;
+  const auto html = read_text(report_dir / "report.html");
+  EXPECT_NE(html.find("Other runs: suspension"), std::string::npos);
+  EXPECT_NE(html.find("apparent_"), std::string::npos);  // the headline key, with soft breaks
 }
 
 TEST(CliSuspension, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
@@ -83,6 +93,8 @@ TEST(CliSuspension, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
            {"--hematocrit 0.2 --mix discocyte=1,platelet=0", "suspension.mix"},
            {"--hematocrit 0.7 --set suspension.packing_max_iterations=1500", "could not pack"},
            {"--hematocrit 0.2 --set suspension.contact_range_um=0.5", "suspension.contact_range_um"},
+           {"--hematocrit 0.2 --orientations 3", "capillary.orientations"},
+           {"--hematocrit 0.2 --checkpoint-every 100", "--checkpoint-every"},
        }) {
     const auto run =
         run_rbcsim(std::string(kCoarseTube) + arguments + " --output '" + out + "'", scratch.path());
