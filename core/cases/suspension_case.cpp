@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "cases/capillary_observables.hpp"
+#include "cases/release_orientations.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "geometry/lattice_grid.hpp"
@@ -182,23 +183,18 @@ SuspensionAverages averages_of(const std::vector<SuspensionSample>& samples, dou
     if (sample.time_s < from_s || sample.time_s == 0.0) continue;
     ++averages.samples;
     viscosities.push_back(sample.relative_apparent_viscosity);
-    averages.relative_apparent_viscosity += sample.relative_apparent_viscosity;
     averages.tube_hematocrit += sample.tube_hematocrit;
     averages.discharge_hematocrit += sample.discharge_hematocrit;
     averages.cell_free_layer_um += sample.cell_free_layer_um;
   }
   if (averages.samples == 0) return averages;
   const double n = static_cast<double>(averages.samples);
-  averages.relative_apparent_viscosity /= n;
   averages.tube_hematocrit /= n;
   averages.discharge_hematocrit /= n;
   averages.cell_free_layer_um /= n;
-  double squares = 0.0;
-  for (const double v : viscosities) {
-    squares += (v - averages.relative_apparent_viscosity) *
-               (v - averages.relative_apparent_viscosity);
-  }
-  averages.relative_apparent_viscosity_sd = n > 1 ? std::sqrt(squares / (n - 1.0)) : 0.0;
+  const auto viscosity = spread_of(viscosities);
+  averages.relative_apparent_viscosity = viscosity.mean;
+  averages.relative_apparent_viscosity_sd = viscosity.standard_deviation;
   return averages;
 }
 

@@ -101,6 +101,12 @@ cases::CapillaryPhysics capillary_physics_from(const config::Config& config,
           config.number("physics.thermal_energy_J")};
 }
 
+double low_reynolds_compression_factor(double physical_reynolds_number,
+                                       double max_reynolds_number) {
+  if (physical_reynolds_number >= max_reynolds_number) return 1.0;
+  return std::sqrt(max_reynolds_number / physical_reynolds_number);
+}
+
 CapillaryCompression capillary_compression_from(const config::Config& config,
                                                 const CapillaryWall& wall) {
   CapillaryCompression compression;
@@ -114,11 +120,10 @@ CapillaryCompression capillary_compression_from(const config::Config& config,
       velocity * 2.0 * *radius_um * kMetresPerMicrometre / viscosity;
   compression.simulated_reynolds_number = compression.physical_reynolds_number;
   const double limit = config.number("capillary.max_reynolds_number");
-  if (!config.boolean("capillary.time_scale_compression") ||
-      compression.physical_reynolds_number >= limit) {
-    return compression;
-  }
-  compression.factor = std::sqrt(limit / compression.physical_reynolds_number);
+  if (!config.boolean("capillary.time_scale_compression")) return compression;
+  compression.factor =
+      low_reynolds_compression_factor(compression.physical_reynolds_number, limit);
+  if (compression.factor == 1.0) return compression;
   compression.simulated_reynolds_number = limit;
   compression.simulated_inlet_velocity_m_per_s = velocity * compression.factor;
   compression.simulated_kinematic_viscosity_m2_per_s = viscosity / compression.factor;

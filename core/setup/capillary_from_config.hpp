@@ -47,6 +47,11 @@ cases::CapillaryPhysics capillary_physics_from(const config::Config& config,
 // Re = U D_inlet / nu at most capillary.max_reynolds_number; a wall file without a known inlet
 // diameter, or the switch off, gives s = 1. Results are converted back (times x s, velocities
 // / s) and result.json records s.
+// The factor s of a low-Reynolds compression: sqrt(limit / Re) below the limit, else 1 (the
+// simulated Reynolds number s^2 Re is then the limit). Shared by the capillary and the suspension.
+double low_reynolds_compression_factor(double physical_reynolds_number,
+                                       double max_reynolds_number);
+
 struct CapillaryCompression {
   double factor = 1.0;                     // s
   double physical_reynolds_number = 0.0;   // U D_inlet / nu (0 when D_inlet is unknown)

@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "setup/capillary_from_config.hpp"
 #include "setup/cell_from_config.hpp"
 #include "setup/membrane_from_config.hpp"
 
@@ -114,8 +115,9 @@ SuspensionCompression suspension_compression_from(const config::Config& config) 
       velocity * config.number("suspension.tube_diameter_um") * 1e-6 / viscosity;
   compression.simulated_reynolds_number = compression.physical_reynolds_number;
   const double limit = config.number("suspension.max_reynolds_number");
-  if (compression.physical_reynolds_number >= limit) return compression;
-  compression.factor = std::sqrt(limit / compression.physical_reynolds_number);
+  compression.factor =
+      low_reynolds_compression_factor(compression.physical_reynolds_number, limit);
+  if (compression.factor == 1.0) return compression;
   compression.simulated_reynolds_number = limit;
   return compression;
 }
