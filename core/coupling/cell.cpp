@@ -65,9 +65,8 @@ void Cell::add_term_forces(const LatticeFrame& frame) {
                  membrane::ForceDetail::per_term);
 }
 
-void Cell::spread_forces(double lattice_force_per_pN, const ibm::DeltaKernel& kernel,
-                         const ibm::GridView& grid, const std::uint8_t* solid_mask,
-                         lattice::VectorField& force_density) {
+void Cell::prepare_spread(double lattice_force_per_pN, const ibm::DeltaKernel& kernel,
+                          const ibm::GridView& grid, const std::uint8_t* solid_mask) {
   for (std::size_t v = 0; v < positions_lu_.size(); ++v) {
     total_forces_pN_[v] = membrane_forces_.total_pN[v] + external_forces_pN_[v];
     if (!total_forces_pN_[v].allFinite()) {
@@ -76,8 +75,6 @@ void Cell::spread_forces(double lattice_force_per_pN, const ibm::DeltaKernel& ke
     forces_lu_[v] = lattice_force_per_pN * total_forces_pN_[v];
   }
   stencil_.build(kernel, grid, positions_lu_, solid_mask);
-  ibm::spread_forces(stencil_, forces_lu_, grid, force_density[0].data(), force_density[1].data(),
-                     force_density[2].data());
 }
 
 bool Cell::has_membrane_friction() const {

@@ -19,6 +19,7 @@
 #include "ibm/grid_view.hpp"
 #include "ibm/interpolation_stencil.hpp"
 #include "ibm/point_advance.hpp"
+#include "ibm/transfer.hpp"
 #include "lattice/fluid_kernel.hpp"
 #include "lattice/fluid_solver.hpp"
 #include "membrane/membrane_model.hpp"
@@ -77,12 +78,13 @@ class Cell {
   // include (the step exchanged it with the fluid implicitly, not through the spread).
   void add_term_forces(const LatticeFrame& frame);
   std::span<Vec3> external_forces_pN() { return external_forces_pN_; }
-  // Phase 2: total = membrane + external; builds the stencil once for this step and spreads
-  // total * lattice_force_per_pN into `force_density`. Throws RuntimeFailure for a non-finite
-  // total force, or from the stencil (a vertex with no fluid node in reach).
-  void spread_forces(double lattice_force_per_pN, const ibm::DeltaKernel& kernel,
-                     const ibm::GridView& grid, const std::uint8_t* solid_mask,
-                     lattice::VectorField& force_density);
+  // Phase 2: total = membrane + external, in lattice force units, and the stencil of this step,
+  // built once and used by the spread and the interpolation. Throws RuntimeFailure for a
+  // non-finite total force, or from the stencil (a vertex with no fluid node in reach).
+  void prepare_spread(double lattice_force_per_pN, const ibm::DeltaKernel& kernel,
+                      const ibm::GridView& grid, const std::uint8_t* solid_mask);
+  // What the driver spreads for this cell (ibm::spread_forces), after prepare_spread.
+  ibm::SpreadSource spread_source() const { return {&stencil_, forces_lu_}; }
   // After the fluid step, with membrane viscosity and the fluid's populations in natural layout:
   // the implicit friction step on the fluid under the membrane (membrane_friction.hpp), over the
   // steps since the previous one; `time_step` counts the steps completed. Throws RuntimeFailure

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <exception>
 #include <stdexcept>
 
 #include "common/errors.hpp"
@@ -41,8 +42,8 @@ std::string criterion_prefix(std::size_t index) {
 }  // namespace
 
 double StepPhaseTimes::total_s() const {
-  return membrane_s + spread_s + indicator_s + fluid_s + friction_s + advance_s + checks_s +
-         observers_s;
+  return membrane_s + contact_s + spread_s + indicator_s + fluid_s + friction_s + advance_s +
+         checks_s + observers_s;
 }
 
 CoupledSimulation::CoupledSimulation(std::unique_ptr<lattice::FluidSolver> fluid,
@@ -120,8 +121,7 @@ void CoupledSimulation::add_contact_forces() {
   for (std::size_t k = 0; k < cells_.size(); ++k) {
     const auto positions = cells_[k].positions_um();
     contact_positions_um_.insert(contact_positions_um_.end(), positions.begin(), positions.end());
-    contact_owners_.insert(contact_owners_.end(), positions.size(),
-                           static_cast<std::uint32_t>(k));
+    contact_owners_.insert(contact_owners_.end(), positions.size(), static_cast<std::uint32_t>(k));
   }
   contact_forces_pN_.assign(contact_positions_um_.size(), Vec3::Zero());
   contact_statistics_ =
@@ -158,29 +158,48 @@ std::vector<std::size_t> CoupledSimulation::capped_steps_per_cell() const {
   return steps;
 }
 
+template <class Body>
+void CoupledSimulation::for_each_cell(const Body& body) {
+  const auto count = static_cast<std::ptrdiff_t>(cells_.size());
+  std::vector<std::exception_ptr> failures(cells_.size());
+  // One cell: its kernels use the threads. Several: one region over the cells, whose kernels
+  // then run on one thread each (their results do not depend on the thread count).
+#pragma omp parallel for schedule(dynamic, 1) if (count > 1)
+  for (std::ptrdiff_t k = 0; k < count; ++k) {
+    try {
+      body(static_cast<std::size_t>(k));
+    } catch (...) {
+      failures[static_cast<std::size_t>(k)] = std::current_exception();
+    }
+  }
+  for (std::size_t k = 0; k < failures.size(); ++k) {
+    if (!failures[k]) continue;
+    try {
+      std::rethrow_exception(failures[k]);
+    } catch (const RuntimeFailure& failure) {
+      fail(k, failure.what());
+    }
+  }
+}
+
 void CoupledSimulation::spread_forces() {
   auto start = Clock::now();
-  for (std::size_t k = 0; k < cells_.size(); ++k) {
-    try {
-      cells_[k].compute_membrane_forces(frame_);
-      for (const auto& force : external_forces_) {
-        force(k, cells_[k], cells_[k].external_forces_pN());
-      }
-    } catch (const RuntimeFailure& failure) {
-      fail(k, failure.what());
-    }
-  }
-  add_contact_forces();
+  for_each_cell([this](std::size_t k) {
+    cells_[k].compute_membrane_forces(frame_);
+    for (const auto& force : external_forces_) force(k, cells_[k], cells_[k].external_forces_pN());
+  });
   lap(start, phase_times_.membrane_s);
+  add_contact_forces();
+  lap(start, phase_times_.contact_s);
+  const std::uint8_t* solid_mask = fluid_->solid_mask().data();
+  for_each_cell([this, solid_mask](std::size_t k) {
+    cells_[k].prepare_spread(lattice_force_per_pN_, *kernel_, grid_, solid_mask);
+  });
+  spread_sources_.clear();
+  for (const Cell& cell : cells_) spread_sources_.push_back(cell.spread_source());
   auto& force_density = fluid_->force_density();
-  for (std::size_t k = 0; k < cells_.size(); ++k) {
-    try {
-      cells_[k].spread_forces(lattice_force_per_pN_, *kernel_, grid_, fluid_->solid_mask().data(),
-                              force_density);
-    } catch (const RuntimeFailure& failure) {
-      fail(k, failure.what());
-    }
-  }
+  ibm::spread_forces(spread_sources_, grid_, force_density[0].data(), force_density[1].data(),
+                     force_density[2].data());
   lap(start, phase_times_.spread_s);
   forces_spread_ = true;
 }
@@ -207,18 +226,13 @@ void CoupledSimulation::apply_membrane_friction() {
 }
 
 void CoupledSimulation::advance_cells() {
-  for (std::size_t k = 0; k < cells_.size(); ++k) {
-    try {
-      cells_[k].interpolate_and_advance(grid_, fluid_->velocity());
-    } catch (const RuntimeFailure& failure) {
-      fail(k, failure.what());
-    }
-  }
+  for_each_cell(
+      [this](std::size_t k) { cells_[k].interpolate_and_advance(grid_, fluid_->velocity()); });
 }
 
 void CoupledSimulation::check_cells() {
   const auto& limits = parameters_.stability;
-  for (std::size_t k = 0; k < cells_.size(); ++k) {
+  for_each_cell([this, &limits](std::size_t k) {
     const Cell& cell = cells_[k];
     auto problem = find_vertex_motion_problem(cell.previous_positions_lu(), cell.positions_lu(),
                                               cell.velocities_lu(), limits.max_vertex_step_lu);
@@ -229,8 +243,8 @@ void CoupledSimulation::check_cells() {
           cell.membrane_forces().capped_vertex_count, cell.vertex_count(),
           cell.model().parameters().vertex_force_cap_pN, limits);
     }
-    if (problem) fail(k, *problem);
-  }
+    if (problem) throw RuntimeFailure(*problem);
+  });
 }
 
 void CoupledSimulation::step() {

@@ -84,13 +84,15 @@ struct Observer {
 };
 
 // Adds forces (pN) to a cell's vertices every step, e.g. optical tweezers. Called after the
-// membrane forces, with the cell's positions_um() current.
+// membrane forces, with the cell's positions_um() current; with several cells, for different cells
+// at once on different threads, so it may write only `forces_pN`.
 using ExternalForce =
     std::function<void(std::size_t cell_index, const Cell& cell, std::span<Vec3> forces_pN)>;
 
 // Wall-clock seconds spent in each phase since construction or the last reset.
 struct StepPhaseTimes {
   double membrane_s = 0.0;   // phase 1 (membrane and external forces)
+  double contact_s = 0.0;    // phase 1, the contact between cells (several cells only)
   double spread_s = 0.0;     // phase 2 (stencils, spreading)
   double indicator_s = 0.0;  // phase 3, locating the cytoplasm (viscosity contrast only)
   double fluid_s = 0.0;      // phase 3
@@ -186,6 +188,11 @@ class CoupledSimulation {
     std::optional<std::size_t> last_observed_step;
   };
 
+  // Runs body(k) for every cell k, in parallel over the cells when there are several; then
+  // fails (fail()) for the lowest-indexed cell whose body threw a RuntimeFailure, and rethrows
+  // any other exception. Bodies may write only their own cell's state.
+  template <class Body>
+  void for_each_cell(const Body& body);
   void add_contact_forces();
   void advance_fluid();
   void apply_membrane_friction();
@@ -222,6 +229,7 @@ class CoupledSimulation {
   std::vector<Vec3> contact_positions_um_;
   std::vector<std::uint32_t> contact_owners_;
   std::vector<Vec3> contact_forces_pN_;
+  std::vector<ibm::SpreadSource> spread_sources_;  // one per cell, rebuilt every step
   std::vector<RegisteredObserver> observers_;
   std::vector<std::unique_ptr<StopCriterion>> stop_criteria_;
   std::optional<CytoplasmIndicator> cytoplasm_;  // when the fluid has a viscosity contrast

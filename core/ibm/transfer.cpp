@@ -34,23 +34,34 @@ NodeRange owned_nodes(std::size_t node_total) {
 
 void spread_forces(const InterpolationStencil& stencil, std::span<const Vec3> point_forces_lu,
                    const GridView& grid, double* fx, double* fy, double* fz) {
-  require_stencil_fits(stencil, point_forces_lu.size(), grid, "spread_forces");
+  const SpreadSource source{&stencil, point_forces_lu};
+  spread_forces(std::span(&source, 1), grid, fx, fy, fz);
+}
+
+void spread_forces(std::span<const SpreadSource> sources, const GridView& grid, double* fx,
+                   double* fy, double* fz) {
+  for (const SpreadSource& source : sources) {
+    require_stencil_fits(*source.stencil, source.point_forces_lu.size(), grid, "spread_forces");
+  }
   const std::size_t node_total = node_count(grid);
 #pragma omp parallel
   {
     const NodeRange owned = owned_nodes(node_total);
-    for (std::size_t point = 0; point < stencil.point_count(); ++point) {
-      const NodeIndexBounds bounds = stencil.node_bounds(point);
-      if (bounds.highest < owned.begin || bounds.lowest >= owned.end) continue;
-      const auto nodes = stencil.nodes(point);
-      const auto weights = stencil.weights(point);
-      const Vec3& force = point_forces_lu[point];
-      for (std::size_t slot = 0; slot < nodes.size(); ++slot) {
-        const std::size_t node = nodes[slot];
-        if (node < owned.begin || node >= owned.end) continue;
-        fx[node] += weights[slot] * force.x();
-        fy[node] += weights[slot] * force.y();
-        fz[node] += weights[slot] * force.z();
+    for (const SpreadSource& source : sources) {
+      const InterpolationStencil& stencil = *source.stencil;
+      for (std::size_t point = 0; point < stencil.point_count(); ++point) {
+        const NodeIndexBounds bounds = stencil.node_bounds(point);
+        if (bounds.highest < owned.begin || bounds.lowest >= owned.end) continue;
+        const auto nodes = stencil.nodes(point);
+        const auto weights = stencil.weights(point);
+        const Vec3& force = source.point_forces_lu[point];
+        for (std::size_t slot = 0; slot < nodes.size(); ++slot) {
+          const std::size_t node = nodes[slot];
+          if (node < owned.begin || node >= owned.end) continue;
+          fx[node] += weights[slot] * force.x();
+          fy[node] += weights[slot] * force.y();
+          fz[node] += weights[slot] * force.z();
+        }
       }
     }
   }

@@ -25,6 +25,18 @@ namespace rbcsim::ibm {
 void spread_forces(const InterpolationStencil& stencil, std::span<const Vec3> point_forces_lu,
                    const GridView& grid, double* fx, double* fy, double* fz);
 
+// One set of points to spread (a cell's vertices): its stencil and one force per point.
+struct SpreadSource {
+  const InterpolationStencil* stencil;
+  std::span<const Vec3> point_forces_lu;
+};
+// The same for several point sets in one parallel region: every node receives its contributions
+// source by source in the given order, then point by point, so the density is bit-identical to
+// spreading the sources one after the other, whatever the thread count. Throws as above for the
+// first source that does not fit, before adding anything.
+void spread_forces(std::span<const SpreadSource> sources, const GridView& grid, double* fx,
+                   double* fy, double* fz);
+
 // Writes, for each point, the weighted sum of the node velocities (ux, uy, uz) over its stencil.
 // Pass the lattice's Guo-corrected velocity u = (sum f c + F/2) / rho.
 void interpolate_velocity(const InterpolationStencil& stencil, const GridView& grid,

@@ -1,6 +1,7 @@
 // Contact between cells in the coupled step (CoupledSimulation::set_cell_contact): two capsules
 // pushed into each other stop at the repulsion's range, the contact adds no net force, and the
-// result does not depend on the thread count.
+// result does not depend on the thread count, also with more cells than threads (the step's
+// parallel loop over cells). Cells colliding in shear: tests/cli_capillary/cli_suspension_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -74,7 +75,7 @@ TEST(CellContact, PushedCellsStopAtTheRangeWithoutNetForce) {
   const auto b = simulation->positions_now_um(1);
   const auto sphere = sphere_mesh(3, 2.0, Vec3::Zero());
   for (const Vec3& p : simulation->positions_now_um(0)) {
-    ASSERT_FALSE(cases::surface_contains(b, sphere, p));
+    ASSERT_FALSE(cases::surface_contains(b, sphere.triangles, p));
   }
   // The pushes cancel exactly; the contact forces cancel pair by pair.
   Vec3 net = Vec3::Zero();
@@ -97,6 +98,38 @@ TEST(CellContact, OneAndTwoThreadsGiveTheSameRun) {
     for (int step = 0; step < 800; ++step) simulation->step();
     EXPECT_GT(simulation->contact_statistics().pairs_in_range, 0u);
     positions.push_back(simulation->positions_now_um(1));
+  }
+  EXPECT_EQ(positions[0], positions[1]);
+}
+
+TEST(CellContact, MoreCellsThanThreadsGiveTheSameRunOnOneAndTwoThreads) {
+  // Seven small capsules in a row along x, alternately above and below y = 5 um, neighbours
+  // 0.4 um apart (within the range), driven alternately along +x and -x: the step's loop over
+  // cells hands them to the threads in a varying order.
+  std::vector<std::vector<Vec3>> positions;
+  for (const int threads : {1, 2}) {
+    const ThreadCountScope scope(threads);
+    auto simulation = std::make_unique<CoupledSimulation>(periodic_fluid(48, 20, 16),
+                                                          plasma_units(), CouplingParameters{});
+    for (int c = 0; c < 7; ++c) {
+      const auto sphere =
+          sphere_mesh(3, 1.4, Vec3(2.0 + 3.0 * c, 5.0 + (c % 2 ? 0.8 : -0.8), 4.0));
+      simulation->add_cell(membrane::MembraneModel(sphere, capsule_parameters(300.0)),
+                           sphere.positions_um);
+    }
+    simulation->add_external_force([](std::size_t cell, const Cell&, std::span<Vec3> forces_pN) {
+      const double direction = cell % 2 == 0 ? 1.0 : -1.0;
+      for (Vec3& force : forces_pN) force.x() += direction * kPushPerVertexPN;
+    });
+    simulation->set_cell_contact(kContact, "test");
+    for (int step = 0; step < 300; ++step) simulation->step();
+    EXPECT_GT(simulation->contact_statistics().pairs_in_range, 0u);
+    std::vector<Vec3> all;
+    for (std::size_t c = 0; c < 7; ++c) {
+      const auto cell = simulation->positions_now_um(c);
+      all.insert(all.end(), cell.begin(), cell.end());
+    }
+    positions.push_back(all);
   }
   EXPECT_EQ(positions[0], positions[1]);
 }

@@ -236,6 +236,29 @@ TEST_P(KernelAndScene, ResultsDoNotDependOnTheThreadCount) {
   EXPECT_EQ(one_thread_velocities, two_thread_velocities);
 }
 
+TEST_P(KernelAndScene, SpreadingSeveralSourcesAtOnceEqualsSpreadingThemInTurn) {
+  // Three overlapping point sets (cells) spread in one parallel region must give, bit for bit,
+  // what spreading them one after the other gives: the order every node receives its terms in.
+  const int previous_threads = omp_get_max_threads();
+  omp_set_num_threads(2);
+  const Case first = make_case(3000), second = make_case(2000), third = make_case(1000);
+  NodeField in_turn(node_count(first.scene.grid));
+  for (const Case* source : {&first, &second, &third}) {
+    rbcsim::ibm::spread_forces(source->stencil, source->forces, first.scene.grid,
+                               in_turn.x.data(), in_turn.y.data(), in_turn.z.data());
+  }
+  const std::vector<rbcsim::ibm::SpreadSource> sources{{&first.stencil, first.forces},
+                                          {&second.stencil, second.forces},
+                                          {&third.stencil, third.forces}};
+  NodeField at_once(node_count(first.scene.grid));
+  rbcsim::ibm::spread_forces(sources, first.scene.grid, at_once.x.data(), at_once.y.data(),
+                             at_once.z.data());
+  omp_set_num_threads(previous_threads);
+  EXPECT_EQ(in_turn.x, at_once.x);
+  EXPECT_EQ(in_turn.y, at_once.y);
+  EXPECT_EQ(in_turn.z, at_once.z);
+}
+
 INSTANTIATE_TEST_SUITE_P(All, KernelAndScene,
                          ::testing::Combine(::testing::Values("phi2", "phi3", "phi4"),
                                             ::testing::Values("periodic", "channel", "closed")),
