@@ -8,6 +8,7 @@
 
 #include "cases/capillary_observables.hpp"
 #include "cases/release_orientations.hpp"
+#include "cases/suspension_packing.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "geometry/lattice_grid.hpp"
@@ -125,6 +126,21 @@ std::pair<double, double> cell_free_layer_um(const coupling::CoupledSimulation& 
           static_cast<double>(populated) / static_cast<double>(outermost.size())};
 }
 
+// How many cells have a vertex inside another cell, across the tube's periodic length.
+std::size_t pierced_cell_count(const coupling::CoupledSimulation& simulation, double length_um) {
+  std::vector<std::vector<Vec3>> positions_um;
+  std::vector<std::span<const mesh::Triangle>> triangles;
+  for (std::size_t c = 0; c < simulation.cells().size(); ++c) {
+    positions_um.push_back(simulation.positions_now_um(c));
+    triangles.push_back(simulation.cell(c).model().triangles());
+  }
+  const auto pierced =
+      find_pierced_cells(positions_um, triangles, contact::PeriodicBox{{length_um, 0.0, 0.0}});
+  return static_cast<std::size_t>(std::ranges::count_if(pierced, [](const auto& other) {
+    return other.has_value();
+  }));
+}
+
 class SuspensionRecorder {
  public:
   SuspensionRecorder(SuspensionRun& run, const SuspensionSettings& settings,
@@ -163,7 +179,10 @@ class SuspensionRecorder {
         volume_flux_um4_per_s / (sample.flow_rate_um3_per_s * settings_.tube_length_um);
     std::tie(sample.cell_free_layer_um, sample.populated_bin_fraction) =
         cell_free_layer_um(simulation, radius_um, settings_.tube_length_um);
+    sample.contact_pairs = simulation.contact_statistics().pairs_in_range;
     sample.close_contact_pairs = simulation.contact_statistics().close_pairs;
+    sample.pierced_cells = pierced_cell_count(simulation, settings_.tube_length_um);
+    if (sample.pierced_cells > 0) ++run_.samples_with_pierced_cells;
     run_.samples.push_back(sample);
   }
 

@@ -71,7 +71,11 @@ struct SuspensionSample {
   double discharge_hematocrit = 0.0;
   double cell_free_layer_um = 0.0;
   double populated_bin_fraction = 0.0;  // of the (x, angle) bins the layer is measured over
+  std::size_t contact_pairs = 0;  // ordered vertex pairs of different cells within the range
   std::size_t close_contact_pairs = 0;
+  // Cells with a vertex inside another cell (find_pierced_cells): surfaces that passed through
+  // each other, which the contact is there to prevent.
+  std::size_t pierced_cells = 0;
 };
 
 struct SuspensionCellSample {
@@ -106,6 +110,7 @@ struct SuspensionRun {
   std::size_t steps = 0;
   double time_s = 0.0;
   std::size_t close_contact_steps = 0;
+  std::size_t samples_with_pierced_cells = 0;
   std::vector<std::size_t> force_capped_steps;  // per cell
   std::string stop_reason;
   std::string failure;

@@ -10,7 +10,9 @@ std::vector<std::string> suspension_table_columns() {
           "discharge_hematocrit",
           "cell_free_layer_um",
           "populated_bin_fraction",
-          "close_contact_pairs"};
+          "contact_pairs",
+          "close_contact_pairs",
+          "pierced_cells"};
 }
 
 std::vector<double> suspension_table_row(const SuspensionSample& sample) {
@@ -21,7 +23,9 @@ std::vector<double> suspension_table_row(const SuspensionSample& sample) {
           sample.discharge_hematocrit,
           sample.cell_free_layer_um,
           sample.populated_bin_fraction,
-          static_cast<double>(sample.close_contact_pairs)};
+          static_cast<double>(sample.contact_pairs),
+          static_cast<double>(sample.close_contact_pairs),
+          static_cast<double>(sample.pierced_cells)};
 }
 
 std::vector<std::string> suspension_cell_table_columns() {
@@ -78,6 +82,7 @@ nlohmann::ordered_json suspension_result_section(std::span<const std::string> mo
       {"contact_force_pN", settings.contact.force_at_contact_pN},
       {"contact_range_um", settings.contact.range_um},
       {"close_contact_steps", run.close_contact_steps},
+      {"samples_with_pierced_cells", run.samples_with_pierced_cells},
       {"force_capped_steps", capped},
       {"fluid_settling_steps", run.fluid_settling_steps},
       {"steps", run.steps},

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
@@ -190,60 +191,13 @@ class Packer {
   contact::CellList list_;
 };
 
-// A vertex of one cell inside another: the packing moved a surface through another one. Only
-// the vertices of A within reach of B's centre can be inside B.
-void require_no_piercing(const Packing& packing, std::span<const mesh::TriangleMesh> prototypes,
-                         std::span<const std::size_t> cell_prototypes, double length_um) {
-  const auto count = packing.positions_um.size();
-  std::vector<Vec3> centres;
-  std::vector<double> reaches;
-  for (const auto& positions : packing.positions_um) {
-    Vec3 centre = Vec3::Zero();
-    for (const Vec3& position : positions) centre += position;
-    centre /= static_cast<double>(positions.size());
-    double reach = 0.0;
-    for (const Vec3& position : positions) reach = std::max(reach, (position - centre).norm());
-    centres.push_back(centre);
-    reaches.push_back(reach);
-  }
-  const contact::PeriodicBox box{{length_um, 0.0, 0.0}};
-  std::vector<std::ptrdiff_t> pierced(count, -1);
-  const auto signed_count = static_cast<std::ptrdiff_t>(count);
-#pragma omp parallel for schedule(dynamic)
-  for (std::ptrdiff_t a = 0; a < signed_count; ++a) {
-    for (std::size_t b = 0; b < count && pierced[a] < 0; ++b) {
-      const auto ua = static_cast<std::size_t>(a);
-      if (ua == b) continue;
-      // B's image nearest to A.
-      const Vec3 shift = centres[ua] - centres[b] - box.minimum_image(centres[ua] - centres[b]);
-      if ((centres[ua] - centres[b] - shift).norm() > reaches[ua] + reaches[b]) continue;
-      std::vector<Vec3> image = packing.positions_um[b];
-      for (auto& position : image) position += shift;
-      const Vec3 centre_b = centres[b] + shift;
-      for (const Vec3& point : packing.positions_um[ua]) {
-        if ((point - centre_b).norm() > reaches[b]) continue;
-        if (surface_contains(image, prototypes[cell_prototypes[b]], point)) {
-          pierced[a] = static_cast<std::ptrdiff_t>(b);
-          break;
-        }
-      }
-    }
-  }
-  for (std::size_t a = 0; a < count; ++a) {
-    if (pierced[a] >= 0) {
-      throw RuntimeFailure("packing: cell " + std::to_string(a) + " pierces cell " +
-                           std::to_string(pierced[a]));
-    }
-  }
-}
-
 }  // namespace
 
-bool surface_contains(std::span<const Vec3> positions_um, const mesh::TriangleMesh& topology,
+bool surface_contains(std::span<const Vec3> positions_um, std::span<const mesh::Triangle> triangles,
                       const Vec3& point_um) {
   // Van Oosterom & Strackee's solid angle of each triangle seen from the point.
   double solid_angle = 0.0;
-  for (const auto& triangle : topology.triangles) {
+  for (const auto& triangle : triangles) {
     const Vec3 a = positions_um[triangle[0]] - point_um;
     const Vec3 b = positions_um[triangle[1]] - point_um;
     const Vec3 c = positions_um[triangle[2]] - point_um;
@@ -255,6 +209,54 @@ bool surface_contains(std::span<const Vec3> positions_um, const mesh::TriangleMe
     solid_angle += 2.0 * std::atan2(numerator, denominator);
   }
   return std::abs(solid_angle) > 2.0 * std::numbers::pi;
+}
+
+std::vector<std::optional<std::size_t>> find_pierced_cells(
+    std::span<const std::vector<Vec3>> positions_um,
+    std::span<const std::span<const mesh::Triangle>> triangles, const contact::PeriodicBox& box) {
+  const auto count = positions_um.size();
+  std::vector<Vec3> centres;
+  std::vector<double> reaches;
+  for (const auto& positions : positions_um) {
+    Vec3 centre = Vec3::Zero();
+    for (const Vec3& position : positions) centre += position;
+    centre /= static_cast<double>(positions.size());
+    double reach = 0.0;
+    for (const Vec3& position : positions) reach = std::max(reach, (position - centre).norm());
+    centres.push_back(centre);
+    reaches.push_back(reach);
+  }
+  std::vector<std::optional<std::size_t>> pierced(count);
+  const auto signed_count = static_cast<std::ptrdiff_t>(count);
+  // Only the vertices of A within reach of B's centre and inside B's bounding box can be in B.
+#pragma omp parallel for schedule(dynamic)
+  for (std::ptrdiff_t a = 0; a < signed_count; ++a) {
+    const auto ua = static_cast<std::size_t>(a);
+    for (std::size_t b = 0; b < count && !pierced[ua]; ++b) {
+      if (ua == b) continue;
+      // B's image nearest to A.
+      const Vec3 shift = centres[ua] - centres[b] - box.minimum_image(centres[ua] - centres[b]);
+      if ((centres[ua] - centres[b] - shift).norm() > reaches[ua] + reaches[b]) continue;
+      std::vector<Vec3> image = positions_um[b];
+      Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity());
+      Vec3 high = -low;
+      for (auto& position : image) {
+        position += shift;
+        low = low.cwiseMin(position);
+        high = high.cwiseMax(position);
+      }
+      const Vec3 centre_b = centres[b] + shift;
+      for (const Vec3& point : positions_um[ua]) {
+        if ((point - centre_b).norm() > reaches[b]) continue;
+        if ((point.array() < low.array()).any() || (point.array() > high.array()).any()) continue;
+        if (surface_contains(image, triangles[b], point)) {
+          pierced[ua] = b;
+          break;
+        }
+      }
+    }
+  }
+  return pierced;
 }
 
 Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
@@ -283,7 +285,19 @@ Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
   }
   packer.place(1.0);
   auto packing = packer.result(iteration);
-  require_no_piercing(packing, prototypes, cell_prototypes, tube.length_um);
+  // A vertex of one cell inside another: the packing moved a surface through another one.
+  std::vector<std::span<const mesh::Triangle>> triangles;
+  for (const std::size_t prototype : cell_prototypes) {
+    triangles.emplace_back(prototypes[prototype].triangles);
+  }
+  const auto pierced = find_pierced_cells(packing.positions_um, triangles,
+                                          contact::PeriodicBox{{tube.length_um, 0.0, 0.0}});
+  for (std::size_t a = 0; a < pierced.size(); ++a) {
+    if (pierced[a]) {
+      throw RuntimeFailure("packing: cell " + std::to_string(a) + " pierces cell " +
+                           std::to_string(*pierced[a]));
+    }
+  }
   return packing;
 }
 

@@ -15,10 +15,12 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "common/vec3.hpp"
+#include "contact/cell_list.hpp"
 #include "mesh/triangle_mesh.hpp"
 
 namespace rbcsim::cases {
@@ -54,7 +56,15 @@ Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
 
 // Whether `point_um` lies inside the closed surface (its winding number, the solid angle the
 // triangles subtend over 4 pi, rounds to 1): used to check that no packed cell pierces another.
-bool surface_contains(std::span<const Vec3> positions_um, const mesh::TriangleMesh& topology,
+bool surface_contains(std::span<const Vec3> positions_um, std::span<const mesh::Triangle> triangles,
                       const Vec3& point_um);
+
+// For each cell, the first other cell (in index order) that one of its vertices lies inside, if
+// any: two surfaces that passed through each other. Cell c's vertices are positions_um[c], its
+// triangles triangles[c]; other cells are taken at their image nearest to c across the box's
+// periodic axes. Thread-count independent.
+std::vector<std::optional<std::size_t>> find_pierced_cells(
+    std::span<const std::vector<Vec3>> positions_um,
+    std::span<const std::span<const mesh::Triangle>> triangles, const contact::PeriodicBox& box);
 
 }  // namespace rbcsim::cases

@@ -73,8 +73,29 @@ TEST(SuspensionPacking, RefusesATargetItCannotReach) {
 
 TEST(SuspensionPacking, SurfaceContainsItsInsideOnly) {
   const auto sphere = mesh::unit_icosphere(3);
-  EXPECT_TRUE(surface_contains(sphere.positions_um, sphere, Vec3(0.1, 0.2, -0.3)));
-  EXPECT_FALSE(surface_contains(sphere.positions_um, sphere, Vec3(1.1, 0.0, 0.0)));
+  EXPECT_TRUE(surface_contains(sphere.positions_um, sphere.triangles, Vec3(0.1, 0.2, -0.3)));
+  EXPECT_FALSE(surface_contains(sphere.positions_um, sphere.triangles, Vec3(1.1, 0.0, 0.0)));
+}
+
+TEST(SuspensionPacking, FindsCellsWhoseSurfacesPassedThroughEachOther) {
+  // Three unit spheres on a periodic x of length 10: A and B 2.2 apart (clear), C overlapping
+  // A across the seam (A at 0.5, C at 9.0: 1.5 apart through the seam).
+  const auto sphere = mesh::unit_icosphere(3);
+  const auto at = [&](double x) {
+    std::vector<Vec3> positions = sphere.positions_um;
+    for (Vec3& position : positions) position.x() += x;
+    return positions;
+  };
+  const std::vector<std::span<const mesh::Triangle>> triangles(3, sphere.triangles);
+  const contact::PeriodicBox box{{10.0, 0.0, 0.0}};
+  auto pierced = find_pierced_cells(std::vector{at(0.5), at(2.7), at(9.0)}, triangles, box);
+  EXPECT_EQ(pierced, (std::vector<std::optional<std::size_t>>{2, std::nullopt, 0}));
+  // Without the periodic image nothing overlaps; moving B into A makes the pair pierce each other.
+  pierced = find_pierced_cells(std::vector{at(0.5), at(2.7), at(9.0)}, triangles,
+                               contact::PeriodicBox{});
+  EXPECT_EQ(pierced, (std::vector<std::optional<std::size_t>>(3)));
+  pierced = find_pierced_cells(std::vector{at(0.5), at(1.9), at(5.0)}, triangles, box);
+  EXPECT_EQ(pierced, (std::vector<std::optional<std::size_t>>{1, 0, std::nullopt}));
 }
 
 // N = round(H V / mean volume), split by largest remainders.
