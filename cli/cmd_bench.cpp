@@ -3,8 +3,9 @@
 // HemoCell's 40x40x20 lattice and on one far beyond the last-level cache, the fraction of the DRAM
 // roofline, and ms per coupled step with a 642- and a 2562-vertex cell — for one thread and for
 // all, with ratios to a reference measured on a named machine (bench_reference.hpp; HemoCell side
-// by side on the project machine unless --reference FILE). Wall-clock measurements: other load
-// lowers them, so the machine's load average is printed with them.
+// by side on the project machine unless --reference FILE), and ms per step of suspensions of 1 to
+// 100 cells with the share of each phase. Wall-clock measurements: other load lowers them, so the
+// machine's load average is printed with them.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -19,6 +20,7 @@
 #include "bench_reference.hpp"
 #include "command_registry.hpp"
 #include "common_options.hpp"
+#include "contact/cell_repulsion.hpp"
 #include "coupling/benchmark.hpp"
 #include "io/atomic_file.hpp"
 #include "lattice/benchmark.hpp"
@@ -48,12 +50,15 @@ constexpr std::array<int, 2> kCellLevels = {3, 4};
 constexpr std::size_t kSmallLatticeSteps = 5;
 constexpr int kSmallLatticeRepetitions = 10;
 constexpr std::size_t kLargeLatticeSteps = 1;
+// Cells in the suspensions measured (642 vertices each) unless --cells.
+const std::vector<int> kDefaultSuspensionCellCounts = {1, 10, 50, 100};
 // Each triad array at least this large, and at least the last-level cache.
 constexpr std::size_t kMinimumTriadBytes = std::size_t{64} << 20;
 
 struct BenchOptions {
   CommonOptions common;
   std::vector<int> large_lattice;
+  std::vector<int> suspension_cell_counts = kDefaultSuspensionCellCounts;
   std::optional<std::filesystem::path> reference_file;
 };
 
@@ -98,21 +103,24 @@ Json fluid_entry(const std::array<int, 3>& extent, const lattice::FluidThroughpu
                                               : Json(nullptr)}};
 }
 
+Json phases_json(const coupling::StepPhaseTimes& phases) {
+  const double ms_per_step = 1e3 / static_cast<double>(phases.steps);
+  return {{"membrane", phases.membrane_s * ms_per_step},
+          {"contact", phases.contact_s * ms_per_step},
+          {"spread", phases.spread_s * ms_per_step},
+          {"cytoplasm_indicator", phases.indicator_s * ms_per_step},
+          {"fluid", phases.fluid_s * ms_per_step},
+          {"membrane_friction", phases.friction_s * ms_per_step},
+          {"interpolate_advance", phases.advance_s * ms_per_step},
+          {"checks", phases.checks_s * ms_per_step},
+          {"observers", phases.observers_s * ms_per_step}};
+}
+
 Json coupled_entry(const coupling::CoupledStepTiming& timing, int threads,
                    const BenchReference& reference) {
-  const auto& phases = timing.fastest_batch_phases;
-  const double ms_per_step = 1e3 / static_cast<double>(phases.steps);
   Json entry = {{"vertices", timing.vertex_count},
                 {"ms_per_step", timing.ms_per_step},
-                {"phases_ms_per_step",
-                 {{"membrane", phases.membrane_s * ms_per_step},
-                  {"spread", phases.spread_s * ms_per_step},
-                  {"cytoplasm_indicator", phases.indicator_s * ms_per_step},
-                  {"fluid", phases.fluid_s * ms_per_step},
-                  {"membrane_friction", phases.friction_s * ms_per_step},
-                  {"interpolate_advance", phases.advance_s * ms_per_step},
-                  {"checks", phases.checks_s * ms_per_step},
-                  {"observers", phases.observers_s * ms_per_step}}}};
+                {"phases_ms_per_step", phases_json(timing.fastest_batch_phases)}};
   // The reference's figures are for the 642-vertex cell.
   entry["speedup_vs_reference"] =
       timing.vertex_count == 642
@@ -121,8 +129,42 @@ Json coupled_entry(const coupling::CoupledStepTiming& timing, int threads,
   return entry;
 }
 
+// The share of the step's measured phases in the four the suspension's cost is made of; the IBM
+// is spreading plus interpolation and advance, the rest (checks, observers) is "other".
+Json suspension_shares(const coupling::StepPhaseTimes& phases) {
+  const double total = phases.total_s();
+  const double ibm = phases.spread_s + phases.advance_s;
+  return {{"fluid", phases.fluid_s / total},
+          {"membrane", phases.membrane_s / total},
+          {"ibm", ibm / total},
+          {"contact", phases.contact_s / total},
+          {"other", 1.0 - (phases.fluid_s + phases.membrane_s + ibm + phases.contact_s) / total}};
+}
+
+// ms per step per cell against one cell's in the same run: 1 when the cost is linear in the cells.
+Json suspension_entries(const std::vector<coupling::SuspensionStepTiming>& timings) {
+  Json entries = Json::array();
+  const double one_cell_ms =
+      timings.front().ms_per_step / static_cast<double>(timings.front().cell_count);
+  for (const auto& timing : timings) {
+    const double per_cell_ms = timing.ms_per_step / static_cast<double>(timing.cell_count);
+    entries.push_back({{"cells", timing.cell_count},
+                       {"vertices", timing.vertex_count},
+                       {"lattice", timing.lattice},
+                       {"contact_pairs", timing.contact_pairs},
+                       {"ms_per_step", timing.ms_per_step},
+                       {"ms_per_step_per_cell", per_cell_ms},
+                       {"per_cell_over_fewest_cells", per_cell_ms / one_cell_ms},
+                       {"shares", suspension_shares(timing.fastest_batch_phases)},
+                       {"phases_ms_per_step", phases_json(timing.fastest_batch_phases)}});
+  }
+  return entries;
+}
+
 struct BenchSetup {
   std::vector<mesh::TriangleMesh> cells;
+  contact::ContactParameters contact;
+  std::vector<int> suspension_cell_counts;
   membrane::MembraneParameters membrane;
   std::optional<units::UnitConverter> units;  // has no default state
   std::string ibm_kernel;
@@ -152,11 +194,18 @@ Json measure_at(int threads, const BenchSetup& setup) {
                                        setup.ibm_kernel, threads, setup.cytoplasm),
         threads, setup.reference));
   }
+  std::vector<coupling::SuspensionStepTiming> suspensions;
+  for (const int count : setup.suspension_cell_counts) {
+    suspensions.push_back(coupling::measure_suspension_step(
+        setup.cells.front(), setup.membrane, *setup.units, setup.contact,
+        static_cast<std::size_t>(count), setup.ibm_kernel, threads));
+  }
   return {{"threads", threads},
           {"memory_bandwidth_GB_per_s", bandwidth},
           {"roofline_mlups", roofline_mlups},
           {"fluid", fluid},
-          {"coupled", coupled}};
+          {"coupled", coupled},
+          {"suspension", suspension_entries(suspensions)}};
 }
 
 BenchSetup bench_setup(const BenchOptions& options, const coupling::MachineDescription& machine) {
@@ -167,6 +216,10 @@ BenchSetup bench_setup(const BenchOptions& options, const coupling::MachineDescr
                                               setup::cell_shape_parameters_from(config)));
   }
   setup.membrane = setup::membrane_parameters_from(config);
+  setup.contact = {config.number("suspension.contact_force_pN"),
+                   config.number("suspension.contact_range_um")};
+  setup.suspension_cell_counts = options.suspension_cell_counts;
+  std::sort(setup.suspension_cell_counts.begin(), setup.suspension_cell_counts.end());
   setup.units.emplace(config::make_unit_converter(config));
   setup.ibm_kernel = config.string("ibm.kernel");
   setup.cytoplasm = {config.number("physics.cytoplasm_viscosity_ratio"),
@@ -239,8 +292,7 @@ void print_fluid_rows(const Json& runs, std::size_t index) {
   if (index == 0) print_row("  vs the reference (below)", field("speedup_vs_reference", 1, "x"));
   print_row(name + ", single precision (MLUPS)", field("single_mlups", 1));
   print_row("  single / double", field("single_over_double", 2, "x"));
-  print_row("  fraction of the roofline at 152 B/node",
-            per_run(runs, [&](const Json& run) {
+  print_row("  fraction of the roofline at 152 B/node", per_run(runs, [&](const Json& run) {
               return fixed(100.0 * run["fluid"][index]["single_roofline_fraction"].get<double>(),
                            0) +
                      " %";
@@ -273,6 +325,37 @@ void print_coupled_rows(const Json& runs, std::size_t index, bool verbose) {
   }
 }
 
+std::string percent(const Json& shares, const char* key) {
+  return fixed(100.0 * shares[key].get<double>(), 0);
+}
+
+void print_suspension_rows(const Json& runs, std::size_t index, bool verbose) {
+  const auto& first = runs.front()["suspension"][index];
+  const auto field = [&](const char* key, int decimals, const std::string& suffix = "") {
+    return per_run(runs, [&](const Json& run) {
+      return fixed(run["suspension"][index][key].get<double>(), decimals) + suffix;
+    });
+  };
+  print_row("suspension, " + std::to_string(first["cells"].get<int>()) + " x " +
+                std::to_string(first["vertices"].get<int>() / first["cells"].get<int>()) +
+                " vertices (ms)",
+            field("ms_per_step", 2));
+  print_row("  per cell (ms)", field("ms_per_step_per_cell", 3));
+  if (index > 0) {
+    print_row("  per cell / fewest cells'", field("per_cell_over_fewest_cells", 2, "x"),
+              "1.00x: linear in the cells");
+  }
+  print_row("  fluid/membrane/IBM/contact (%)", per_run(runs, [&](const Json& run) {
+              const auto& shares = run["suspension"][index]["shares"];
+              return percent(shares, "fluid") + "/" + percent(shares, "membrane") + "/" +
+                     percent(shares, "ibm") + "/" + percent(shares, "contact");
+            }));
+  if (!verbose) return;
+  print_row("    vertex pairs in contact range", per_run(runs, [&](const Json& run) {
+              return std::to_string(run["suspension"][index]["contact_pairs"].get<std::size_t>());
+            }));
+}
+
 void print_text(const Json& report, bool verbose) {
   const auto& machine = report["machine"];
   std::printf("rbcsim bench: %s, %d logical CPUs, last-level cache %.0f MiB\n",
@@ -296,6 +379,9 @@ void print_text(const Json& report, bool verbose) {
   }
   for (std::size_t index = 0; index < runs.front()["coupled"].size(); ++index) {
     print_coupled_rows(runs, index, verbose);
+  }
+  for (std::size_t index = 0; index < runs.front()["suspension"].size(); ++index) {
+    print_suspension_rows(runs, index, verbose);
   }
   const auto& reference = report["reference"];
   std::printf(
@@ -370,6 +456,13 @@ void attach_bench_command(CLI::App& application) {
                    "Extent of the out-of-cache lattice (default: twice the last-level cache)")
       ->expected(3)
       ->type_name("NX NY NZ")
+      ->check(whole_number_at_least(1));
+  command
+      ->add_option("--cells", options->suspension_cell_counts,
+                   "Cell counts of the suspensions measured, 642 vertices each, in a row of "
+                   "periodic blocks with contact on (docs/commands/bench.md)")
+      ->default_str("1 10 50 100")
+      ->type_name("N ...")
       ->check(whole_number_at_least(1));
   command
       ->add_option("--reference", options->reference_file,

@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "common/errors.hpp"
 #include "common/fastest_batch.hpp"
 #include "common/thread_count_scope.hpp"
 #include "lattice/d3q19.hpp"
@@ -97,17 +98,35 @@ std::unique_ptr<lattice::FluidSolver> shear_wave_fluid(const std::array<int, 3>&
   return fluid;
 }
 
-// The mesh's vertices moved so that their mean sits at the centre of the box.
+// The mesh's vertices moved so that their mean sits at the centre of a box of `extent` nodes
+// whose first node is `first_node_um`.
 std::vector<Vec3> centred_in_box(const mesh::TriangleMesh& cell_mesh,
-                                 const std::array<int, 3>& extent, double dx_um) {
+                                 const std::array<int, 3>& extent, double dx_um,
+                                 const Vec3& first_node_um = Vec3::Zero()) {
   Vec3 mean = Vec3::Zero();
   for (const Vec3& position : cell_mesh.positions_um) mean += position;
   mean /= static_cast<double>(cell_mesh.vertex_count());
-  const Vec3 centre_um = 0.5 * dx_um * Vec3(extent[0] - 1.0, extent[1] - 1.0, extent[2] - 1.0);
+  const Vec3 centre_um =
+      first_node_um + 0.5 * dx_um * Vec3(extent[0] - 1.0, extent[1] - 1.0, extent[2] - 1.0);
   std::vector<Vec3> positions;
   for (const Vec3& position : cell_mesh.positions_um)
     positions.push_back(position - mean + centre_um);
   return positions;
+}
+
+// Times steps of `simulation` after one warm-up step (which sizes the stencils and the kernels'
+// buffers): ms per step and the phases of the fastest batch.
+template <typename Timing>
+void time_steps(CoupledSimulation& simulation, Timing& timing) {
+  simulation.step();
+  simulation.reset_phase_times();
+  timing.ms_per_step = 1e3 * fastest_batch_seconds_per_call(
+                                 [&] { simulation.step(); }, kCoupledStepBatches,
+                                 [&](bool fastest) {
+                                   if (fastest)
+                                     timing.fastest_batch_phases = simulation.phase_times();
+                                   simulation.reset_phase_times();
+                                 });
 }
 
 }  // namespace
@@ -183,18 +202,52 @@ CoupledStepTiming measure_coupled_step(const mesh::TriangleMesh& cell_mesh,
       coupling);
   const auto positions_um = centred_in_box(cell_mesh, extent, simulation.frame().dx_um);
   simulation.add_cell(membrane::MembraneModel(cell_mesh, membrane_parameters), positions_um);
-  simulation.step();  // warm-up: sizes the stencil and the kernel's buffers
-  simulation.reset_phase_times();
-
   CoupledStepTiming timing;
   timing.vertex_count = cell_mesh.vertex_count();
-  timing.ms_per_step = 1e3 * fastest_batch_seconds_per_call(
-                                 [&] { simulation.step(); }, kCoupledStepBatches,
-                                 [&](bool fastest) {
-                                   if (fastest)
-                                     timing.fastest_batch_phases = simulation.phase_times();
-                                   simulation.reset_phase_times();
-                                 });
+  time_steps(simulation, timing);
+  return timing;
+}
+
+std::array<int, 3> suspension_block_nodes(const mesh::TriangleMesh& cell_mesh, double dx_um,
+                                          double contact_range_um) {
+  Vec3 low = cell_mesh.positions_um.front();
+  Vec3 high = low;
+  for (const Vec3& position : cell_mesh.positions_um) {
+    low = low.cwiseMin(position);
+    high = high.cwiseMax(position);
+  }
+  const Vec3 size_um = high - low;
+  constexpr int kMarginNodes = 2;
+  return {static_cast<int>(std::ceil((size_um.x() + 0.5 * contact_range_um) / dx_um)),
+          static_cast<int>(std::ceil(size_um.y() / dx_um)) + 2 * kMarginNodes,
+          static_cast<int>(std::ceil(size_um.z() / dx_um)) + 2 * kMarginNodes};
+}
+
+SuspensionStepTiming measure_suspension_step(
+    const mesh::TriangleMesh& cell_mesh, const membrane::MembraneParameters& membrane_parameters,
+    const units::UnitConverter& units, const contact::ContactParameters& contact,
+    std::size_t cell_count, std::string_view ibm_kernel, int threads) {
+  if (cell_count == 0) throw InputError("bench", "a suspension needs at least one cell");
+  const ThreadCountScope thread_count(threads);
+  const double dx_um = 1e6 * units.dx_m();
+  const auto block = suspension_block_nodes(cell_mesh, dx_um, contact.range_um);
+  const std::array<int, 3> extent = {block[0] * static_cast<int>(cell_count), block[1], block[2]};
+  CouplingParameters coupling;
+  coupling.kernel = std::string(ibm_kernel);
+  CoupledSimulation simulation(shear_wave_fluid(extent, units.relaxation_time(), 1.0), units,
+                               coupling);
+  for (std::size_t k = 0; k < cell_count; ++k) {
+    const Vec3 first_node_um(dx_um * block[0] * static_cast<double>(k), 0.0, 0.0);
+    simulation.add_cell(membrane::MembraneModel(cell_mesh, membrane_parameters),
+                        centred_in_box(cell_mesh, block, dx_um, first_node_um));
+  }
+  simulation.set_cell_contact(contact, "suspension.contact_force_pN");
+  SuspensionStepTiming timing;
+  timing.cell_count = cell_count;
+  timing.vertex_count = cell_count * cell_mesh.vertex_count();
+  timing.lattice = extent;
+  time_steps(simulation, timing);
+  timing.contact_pairs = simulation.contact_statistics().pairs_in_range;
   return timing;
 }
 

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "contact/cell_repulsion.hpp"
 #include "coupling/coupled_simulation.hpp"
 #include "membrane/parameters.hpp"
 #include "mesh/triangle_mesh.hpp"
@@ -61,5 +62,33 @@ CoupledStepTiming measure_coupled_step(const mesh::TriangleMesh& cell_mesh,
                                        const std::array<int, 3>& extent,
                                        std::string_view ibm_kernel, int threads,
                                        const CytoplasmSettings& cytoplasm = {});
+
+struct SuspensionStepTiming {
+  std::size_t cell_count = 0;
+  std::size_t vertex_count = 0;  // of all cells
+  std::array<int, 3> lattice{};
+  double ms_per_step = 0.0;  // the fastest batch
+  StepPhaseTimes fastest_batch_phases;
+  // Vertex pairs of different cells within the contact range in the last step: the contact search
+  // had work to do.
+  std::size_t contact_pairs = 0;
+};
+
+// The block of nodes each cell of measure_suspension_step gets: the cell's bounding box plus
+// 2 nodes on either side across the row (room for a 4-point kernel), and along the row plus half
+// the contact range, so that neighbours face each other inside the range.
+std::array<int, 3> suspension_block_nodes(const mesh::TriangleMesh& cell_mesh, double dx_um,
+                                          double contact_range_um);
+
+// `cell_count` copies of `cell_mesh`, each centred in its own block (suspension_block_nodes), the
+// blocks in a row along x in a periodic box whose fluid starts as a shear wave, with contact on:
+// the fluid, the vertices and the contact pairs all grow in proportion to the count, so a step
+// whose cost is linear in the cells costs the same per cell at every count. Timed after one
+// warm-up step on `threads` threads; restores the OpenMP thread count. Throws InputError for no
+// cells.
+SuspensionStepTiming measure_suspension_step(
+    const mesh::TriangleMesh& cell_mesh, const membrane::MembraneParameters& membrane_parameters,
+    const units::UnitConverter& units, const contact::ContactParameters& contact,
+    std::size_t cell_count, std::string_view ibm_kernel, int threads);
 
 }  // namespace rbcsim::coupling

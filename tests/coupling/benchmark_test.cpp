@@ -68,5 +68,45 @@ TEST(Benchmark, CoupledStepTimingCoversEveryPhase) {
                InputError);
 }
 
+TEST(Benchmark, SuspensionBlocksPutNeighboursWithinTheContactRange) {
+  const auto sphere = testing::sphere_mesh(2, 3.0, Vec3(5.0, -2.0, 1.0));  // 6 um across
+  const double dx_um = 0.5;
+  const double range_um = 0.75;
+  const auto block = suspension_block_nodes(sphere, dx_um, range_um);
+  Vec3 low = sphere.positions_um.front(), high = low;
+  for (const Vec3& position : sphere.positions_um) {
+    low = low.cwiseMin(position);
+    high = high.cwiseMax(position);
+  }
+  // Across the row: the cell plus 2 nodes either side, for a 4-point kernel.
+  for (const int axis : {1, 2}) {
+    EXPECT_GE(block[axis] * dx_um, high[axis] - low[axis] + 4 * dx_um);
+    EXPECT_LT(block[axis] * dx_um, high[axis] - low[axis] + 5 * dx_um);
+  }
+  // Along it the gap between neighbours' bounding boxes lies in [range / 2, range / 2 + dx).
+  const double gap_um = block[0] * dx_um - (high.x() - low.x());
+  EXPECT_GE(gap_um, 0.5 * range_um);
+  EXPECT_LT(gap_um, 0.5 * range_um + dx_um);
+}
+
+TEST(Benchmark, SuspensionTimingPlacesEveryCellAndRefusesNone) {
+  const int threads_before = omp_get_max_threads();
+  const auto sphere = testing::sphere_mesh(1, 1.0, Vec3::Zero());
+  const auto units = testing::plasma_units();
+  const contact::ContactParameters contact{5.0, 0.75};
+  const auto timing =
+      measure_suspension_step(sphere, membrane::MembraneParameters{}, units, contact, 3, "phi2", 1);
+  EXPECT_EQ(timing.cell_count, 3u);
+  EXPECT_EQ(timing.vertex_count, 3 * 42u);
+  const auto block = suspension_block_nodes(sphere, 1e6 * units.dx_m(), contact.range_um);
+  EXPECT_EQ(timing.lattice, (std::array<int, 3>{3 * block[0], block[1], block[2]}));
+  EXPECT_GT(timing.ms_per_step, 0.0);
+  EXPECT_GT(timing.fastest_batch_phases.contact_s, 0.0);
+  EXPECT_EQ(omp_get_max_threads(), threads_before);
+  EXPECT_THROW(
+      measure_suspension_step(sphere, membrane::MembraneParameters{}, units, contact, 0, "phi2", 1),
+      InputError);
+}
+
 }  // namespace
 }  // namespace rbcsim::coupling

@@ -96,7 +96,7 @@ TEST(RunControl, PhaseTimesAddUpToTheSteps) {
   EXPECT_EQ(times.steps, 5u);
   EXPECT_GT(times.fluid_s, 0.0);
   EXPECT_GT(times.membrane_s, 0.0);
-  EXPECT_DOUBLE_EQ(times.total_s(), times.membrane_s + times.spread_s + times.indicator_s +
+  EXPECT_DOUBLE_EQ(times.total_s(), times.membrane_s + times.contact_s + times.spread_s + times.indicator_s +
                                         times.fluid_s + times.friction_s + times.advance_s +
                                         times.checks_s + times.observers_s);
   simulation->reset_phase_times();
