@@ -3,7 +3,6 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numbers>
 #include <random>
 #include <string>
@@ -55,10 +54,9 @@ Eigen::Quaterniond random_orientation(std::mt19937& generator) {
   const double u2 = unit(generator);
   const double u3 = unit(generator);
   const double two_pi = 2.0 * std::numbers::pi;
-  return Eigen::Quaterniond(std::sqrt(u1) * std::cos(two_pi * u3),
-                            std::sqrt(1.0 - u1) * std::sin(two_pi * u2),
-                            std::sqrt(1.0 - u1) * std::cos(two_pi * u2),
-                            std::sqrt(u1) * std::sin(two_pi * u3));
+  return Eigen::Quaterniond(
+      std::sqrt(u1) * std::cos(two_pi * u3), std::sqrt(1.0 - u1) * std::sin(two_pi * u2),
+      std::sqrt(1.0 - u1) * std::cos(two_pi * u2), std::sqrt(u1) * std::sin(two_pi * u3));
 }
 
 Vec3 random_place(std::mt19937& generator, const PackingTube& tube, double clear_radius_um) {
@@ -118,9 +116,9 @@ class Packer {
     std::size_t offset = 0;
     for (const auto& cell : cells_) {
       const auto count = prototypes_[cell.prototype].offsets_um.size();
-      packing.positions_um.emplace_back(positions_.begin() + static_cast<std::ptrdiff_t>(offset),
-                                        positions_.begin() +
-                                            static_cast<std::ptrdiff_t>(offset + count));
+      packing.positions_um.emplace_back(
+          positions_.begin() + static_cast<std::ptrdiff_t>(offset),
+          positions_.begin() + static_cast<std::ptrdiff_t>(offset + count));
       offset += count;
       volume_um3 += prototypes_[cell.prototype].volume_um3;
     }
@@ -215,41 +213,43 @@ std::vector<std::optional<std::size_t>> find_pierced_cells(
     std::span<const std::vector<Vec3>> positions_um,
     std::span<const std::span<const mesh::Triangle>> triangles, const contact::PeriodicBox& box) {
   const auto count = positions_um.size();
-  std::vector<Vec3> centres;
+  // Each cell's centre, reach (farthest vertex from the centre) and bounding box.
+  std::vector<Vec3> centres, lows, highs;
   std::vector<double> reaches;
   for (const auto& positions : positions_um) {
     Vec3 centre = Vec3::Zero();
-    for (const Vec3& position : positions) centre += position;
+    Vec3 low = positions.front(), high = low;
+    for (const Vec3& position : positions) {
+      centre += position;
+      low = low.cwiseMin(position);
+      high = high.cwiseMax(position);
+    }
     centre /= static_cast<double>(positions.size());
     double reach = 0.0;
     for (const Vec3& position : positions) reach = std::max(reach, (position - centre).norm());
     centres.push_back(centre);
+    lows.push_back(low);
+    highs.push_back(high);
     reaches.push_back(reach);
   }
   std::vector<std::optional<std::size_t>> pierced(count);
   const auto signed_count = static_cast<std::ptrdiff_t>(count);
   // Only the vertices of A within reach of B's centre and inside B's bounding box can be in B.
+  // A's vertices are moved next to B (by the periodic shift of B's image nearest to A) rather
+  // than B's to A: nothing is copied.
 #pragma omp parallel for schedule(dynamic)
   for (std::ptrdiff_t a = 0; a < signed_count; ++a) {
     const auto ua = static_cast<std::size_t>(a);
     for (std::size_t b = 0; b < count && !pierced[ua]; ++b) {
       if (ua == b) continue;
-      // B's image nearest to A.
       const Vec3 shift = centres[ua] - centres[b] - box.minimum_image(centres[ua] - centres[b]);
       if ((centres[ua] - centres[b] - shift).norm() > reaches[ua] + reaches[b]) continue;
-      std::vector<Vec3> image = positions_um[b];
-      Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity());
-      Vec3 high = -low;
-      for (auto& position : image) {
-        position += shift;
-        low = low.cwiseMin(position);
-        high = high.cwiseMax(position);
-      }
-      const Vec3 centre_b = centres[b] + shift;
-      for (const Vec3& point : positions_um[ua]) {
-        if ((point - centre_b).norm() > reaches[b]) continue;
-        if ((point.array() < low.array()).any() || (point.array() > high.array()).any()) continue;
-        if (surface_contains(image, triangles[b], point)) {
+      for (const Vec3& vertex : positions_um[ua]) {
+        const Vec3 point = vertex - shift;
+        if ((point - centres[b]).norm() > reaches[b]) continue;
+        if ((point.array() < lows[b].array()).any() || (point.array() > highs[b].array()).any())
+          continue;
+        if (surface_contains(positions_um[b], triangles[b], point)) {
           pierced[ua] = b;
           break;
         }
@@ -279,9 +279,10 @@ Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
                          " cells into the tube: after " + std::to_string(iteration) +
                          " iterations they were clear only at " + format_number(clear_scale) +
                          " of their size, hematocrit " +
-                         format_number(packer.hematocrit_at(clear_scale)) +
-                         " (the " + std::to_string(cell_prototypes.size()) + " cells at full size: " +
-                         format_number(packer.hematocrit_at(1.0)) + "); lower the hematocrit or widen/lengthen the tube");
+                         format_number(packer.hematocrit_at(clear_scale)) + " (the " +
+                         std::to_string(cell_prototypes.size()) +
+                         " cells at full size: " + format_number(packer.hematocrit_at(1.0)) +
+                         "); lower the hematocrit or widen/lengthen the tube");
   }
   packer.place(1.0);
   auto packing = packer.result(iteration);
