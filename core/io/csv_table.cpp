@@ -94,12 +94,24 @@ bool CsvTable::has_column(std::string_view name) const {
   return std::find(column_names_.begin(), column_names_.end(), name) != column_names_.end();
 }
 
-std::vector<double> CsvTable::numbers(std::string_view column_name) const {
+std::size_t CsvTable::column_index(std::string_view column_name) const {
   const auto column = std::find(column_names_.begin(), column_names_.end(), column_name);
   if (column == column_names_.end()) {
     throw InputError(source_, "no column " + in_quotes(column_name));
   }
-  const auto index = static_cast<std::size_t>(column - column_names_.begin());
+  return static_cast<std::size_t>(column - column_names_.begin());
+}
+
+std::vector<std::string> CsvTable::strings(std::string_view column_name) const {
+  const auto index = column_index(column_name);
+  std::vector<std::string> values;
+  values.reserve(rows_.size());
+  for (const auto& row : rows_) values.push_back(row.fields[index]);
+  return values;
+}
+
+std::vector<double> CsvTable::numbers(std::string_view column_name) const {
+  const auto index = column_index(column_name);
   std::vector<double> values;
   values.reserve(rows_.size());
   for (const auto& row : rows_) {

@@ -27,8 +27,12 @@ class CsvTable {
   // The column as numbers. Throws InputError naming the source if the column is missing or a
   // cell is not a number (the message gives the line and the cell).
   std::vector<double> numbers(std::string_view column_name) const;
+  // The column's fields as text (quotes removed). Throws InputError if the column is missing.
+  std::vector<std::string> strings(std::string_view column_name) const;
 
  private:
+  std::size_t column_index(std::string_view column_name) const;
+
   struct Row {
     std::size_t line;  // 1-based line in the source, for diagnostics
     std::vector<std::string> fields;

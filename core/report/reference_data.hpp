@@ -2,6 +2,7 @@
 // (see core/config/CMakeLists.txt), so a report needs no file beside the runs.
 #pragma once
 
+#include <string>
 #include <vector>
 
 namespace rbcsim::report {
@@ -18,5 +19,36 @@ struct StretchReference {
 };
 
 const StretchReference& mills2004_stretch();
+
+// Straight-tube blood flow in vitro (share/reference/pries_tube_flow.csv keeps the provenance and
+// the caveats): the fit of Pries, Neuhaus, Gaehtgens (1992, Am J Physiol 263:H1770) of the
+// apparent viscosity relative to plasma, eta_rel(D, H_D), and the Fahraeus ratio H_T/H_D of
+// Pries, Secomb, Gaehtgens, Gross (1990, Circ Res 67:826), both against the tube diameter D (um)
+// and the discharge hematocrit H_D (fraction).
+double pries1992_relative_apparent_viscosity(double diameter_um, double discharge_hematocrit);
+double pries1990_tube_to_discharge_hematocrit(double diameter_um, double discharge_hematocrit);
+
+// The rows of share/reference/pries_tube_flow.csv (computed there from the same fits), so the
+// formulas above can be checked against an implementation of their own.
+struct TubeFlowReferenceRow {
+  double diameter_um;
+  double discharge_hematocrit;
+  double relative_apparent_viscosity;
+  double tube_to_discharge_hematocrit;
+};
+const std::vector<TubeFlowReferenceRow>& pries_tube_flow_table();
+
+// Cell-free layer thickness next to the wall (share/reference/cell_free_layer.csv): in-vivo
+// values (READ_TEXT) and simulation values (RECALLED, a check of scale, not a bound).
+struct CellFreeLayerReference {
+  std::string source;
+  double diameter_um;
+  double hematocrit;
+  std::string hematocrit_kind;  // "systemic", "tube" or "discharge"
+  double cell_free_layer_um;
+  double uncertainty_um;
+  std::string status;  // "READ_TEXT" or "RECALLED"
+};
+const std::vector<CellFreeLayerReference>& cell_free_layer_reference();
 
 }  // namespace rbcsim::report

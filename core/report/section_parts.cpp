@@ -11,6 +11,7 @@ std::span<const ExperimentSection> experiment_sections() {
       {"stretch", build_stretch_section},
       {"shear", build_shear_section},
       {"capillary", build_capillary_section},
+      {"suspension", build_suspension_section},
   };
   return kSections;
 }

@@ -4,7 +4,10 @@
 //              within kModulusAgreement;
 //   stretch    the Mills et al. (2004) points inside both error bars;
 //   capillary  the transit order against the paper's (discocyte < echinocyte III < stomatocyte
-//              II), and whether the DI returns to its inlet value after the throat (Fig. 13).
+//              II), and whether the DI returns to its inlet value after the throat (Fig. 13);
+//   suspension the apparent viscosity and the Fahraeus ratio against the in-vitro fits of Pries
+//              et al. (within 15 %), the cell-free layer against its references (the section's
+//              comparisons).
 // Shear has no digitised reference here (the paper's Figs. 9-11 are only plotted).
 #include <cmath>
 
@@ -108,6 +111,15 @@ Section build_verdict_section(const RunList& runs, const std::vector<Section>& s
     if (run.command == "capillary") capillary_rows(run, labels[i], table);
   }
   for (const auto& other : sections) {
+    if (other.id == "suspension") {
+      for (const auto& comparison : other.summary.at("comparisons")) {
+        std::vector<std::string> row;
+        for (const char* column : {"comparison", "rbcsim", "reference", "difference", "verdict"}) {
+          row.push_back(comparison.at(column).get<std::string>());
+        }
+        table.rows.push_back(std::move(row));
+      }
+    }
     if (other.id != "capillary") continue;
     for (const auto& order : other.summary.value("transit_time_order", nlohmann::json::array())) {
       std::string ours;

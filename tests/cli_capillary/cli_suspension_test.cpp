@@ -25,7 +25,8 @@ using rbcsim::testing::ScratchDirectory;
 // The contact's range must bridge the 162-vertex cells' edges (up to 1.66 um).
 constexpr const char* kCoarseTube =
     "capillary --geometry tube --diameter-um 10 --length-um 12 --set mesh.subdivisions=2 "
-    "--set mesh.method=parametric --set lattice.spacing_um=1 --set suspension.contact_range_um=1.75 "
+    "--set mesh.method=parametric --set lattice.spacing_um=1 --set "
+    "suspension.contact_range_um=1.75 "
     "--set suspension.duration_s=2e-4 --set suspension.sample_interval_s=2e-5 "
     "--set output.membrane_interval_s=1e-4 --set output.fluid_interval_s=1e-4 ";
 
@@ -34,7 +35,8 @@ TEST(CliSuspension, WritesTheRunDirectoryOfAMixedSuspension) {
   const auto run_dir = scratch.path() / "run";
   const auto result = run_rbcsim(std::string(kCoarseTube) +
                                      "--hematocrit 0.2 --mix discocyte=0.5,stomatocyte-II=0.5 "
-                                     "--threads 2 --json --output '" + run_dir.string() + "'",
+                                     "--threads 2 --json --output '" +
+                                     run_dir.string() + "'",
                                  scratch.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto printed = printed_run_result(result, run_dir, "capillary");
@@ -53,8 +55,9 @@ TEST(CliSuspension, WritesTheRunDirectoryOfAMixedSuspension) {
   // tube), reported in physical units after the time-scale compression. The lattice resolves
   // the diameter with 10 nodes; its interpolated walls are within 1 % of Poiseuille there
   // (tests/lattice/curved_wall_test.cpp: 0.2 % at 20 nodes, second order).
-  EXPECT_NEAR(suspension["plasma_flow_rate_um3_per_s"].get<double>() / (3.14159265358979 * 25.0 * 2000.0),
-              1.0, 0.02);
+  EXPECT_NEAR(
+      suspension["plasma_flow_rate_um3_per_s"].get<double>() / (3.14159265358979 * 25.0 * 2000.0),
+      1.0, 0.02);
 
   const auto flow = rbcsim::io::read_csv_file(run_dir / "suspension_timeseries.csv");
   const auto time_s = flow.numbers("time_s");
@@ -75,15 +78,22 @@ TEST(CliSuspension, WritesTheRunDirectoryOfAMixedSuspension) {
   }
   EXPECT_TRUE(found);
 
-  // `rbcsim report` lists it as a suspension, with its headline numbers, not as a transit.
+  // `rbcsim report` gives it the suspension section (its time series, the comparison with
+  // Pries et al. at its diameter and measured H_D, its centres across the tube), not a transit.
   const auto report_dir = scratch.path() / "report";
-  const auto report = run_rbcsim("report '" + run_dir.string() + "' --json --output '" +
-                                     report_dir.string() + "'",
-                                 scratch.path());
+  const auto report =
+      run_rbcsim("report '" + run_dir.string() + "' --json --output '" + report_dir.string() + "'",
+                 scratch.path());
   ASSERT_EQ(report.exit_code, 0) << report.err;
   const auto html = read_text(report_dir / "report.html");
-  EXPECT_NE(html.find("Other runs: suspension"), std::string::npos);
-  EXPECT_NE(html.find("apparent_"), std::string::npos);  // the headline key, with soft breaks
+  EXPECT_NE(html.find("Suspensions in a straight tube"), std::string::npos);
+  EXPECT_EQ(html.find("Capillary transit"), std::string::npos);
+  const auto summary = nlohmann::json::parse(report.out);
+  ASSERT_EQ(summary["suspension"]["runs"].size(), 1u);
+  const auto& density = summary["suspension"]["runs"][0]["centre_density"];
+  EXPECT_EQ(density["discocyte"].size(), 10u);
+  EXPECT_EQ(density["stomatocyte-II"].size(), 10u);
+  EXPECT_GE(summary["suspension"]["comparisons"].size(), 2u);  // viscosity and H_T / H_D
 }
 
 // Four discocytes of 642 vertices in a 10 um tube: in the Poiseuille flow the cells nearer the
@@ -99,7 +109,8 @@ TEST(CliSuspension, CellsOvertakingEachOtherInTubeFlowNeverInterpenetrate) {
       "capillary --geometry tube --diameter-um 10 --length-um 24 --hematocrit 0.2 "
       "--set mesh.subdivisions=3 --set mesh.method=parametric --set suspension.duration_s=2e-3 "
       "--set suspension.sample_interval_s=5e-5 --set output.membrane_interval_s=0 "
-      "--set output.fluid_interval_s=0 --threads 2 --json --output '" + run_dir.string() + "'",
+      "--set output.fluid_interval_s=0 --threads 2 --json --output '" +
+          run_dir.string() + "'",
       scratch.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto suspension = printed_run_result(result, run_dir, "capillary")["suspension"];
@@ -116,22 +127,24 @@ TEST(CliSuspension, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
   const ScratchDirectory scratch;
   const auto out = (scratch.path() / "run").string();
   for (const auto& [arguments, named] : {
-           std::pair<std::string, std::string>{"--hematocrit 0.2 --mix discocyte=0.5,stomatocyte-II=0.4",
-                                               "suspension.mix"},
+           std::pair<std::string, std::string>{
+               "--hematocrit 0.2 --mix discocyte=0.5,stomatocyte-II=0.4", "suspension.mix"},
            {"--hematocrit 0.2 --mix discocyte=1,platelet=0", "suspension.mix"},
            {"--hematocrit 0.7 --set suspension.packing_max_iterations=1500", "could not pack"},
-           {"--hematocrit 0.2 --set suspension.contact_range_um=0.5", "suspension.contact_range_um"},
+           {"--hematocrit 0.2 --set suspension.contact_range_um=0.5",
+            "suspension.contact_range_um"},
            {"--hematocrit 0.2 --orientations 3", "capillary.orientations"},
            {"--hematocrit 0.2 --checkpoint-every 100", "--checkpoint-every"},
        }) {
-    const auto run =
-        run_rbcsim(std::string(kCoarseTube) + arguments + " --output '" + out + "'", scratch.path());
+    const auto run = run_rbcsim(std::string(kCoarseTube) + arguments + " --output '" + out + "'",
+                                scratch.path());
     EXPECT_EQ(run.exit_code, 2) << arguments << ": " << run.err;
     EXPECT_NE(run.err.find(named), std::string::npos) << run.err;
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
     EXPECT_FALSE(fs::exists(out)) << arguments;
   }
-  const auto paper = run_rbcsim("capillary --hematocrit 0.2 --output '" + out + "'", scratch.path());
+  const auto paper =
+      run_rbcsim("capillary --hematocrit 0.2 --output '" + out + "'", scratch.path());
   EXPECT_EQ(paper.exit_code, 2);
   EXPECT_NE(paper.err.find("--geometry tube"), std::string::npos) << paper.err;
   EXPECT_FALSE(fs::exists(out));

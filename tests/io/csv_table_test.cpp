@@ -37,6 +37,7 @@ TEST(CsvTable, ReadsQuotedFieldsAndFlags) {
       "name,value,converged\n\"a, \"\"quoted\"\" name\",+1e-19,true\nplain,-2.5,false\n", "x");
   EXPECT_EQ(table.numbers("value"), (std::vector<double>{1e-19, -2.5}));
   EXPECT_EQ(table.numbers("converged"), (std::vector<double>{1, 0}));
+  EXPECT_EQ(table.strings("name"), (std::vector<std::string>{"a, \"quoted\" name", "plain"}));
 }
 
 TEST(CsvTable, NamesTheSourceLineAndColumnOfAProblem) {

@@ -28,3 +28,61 @@ TEST(Mills2004Reference, IsEmbeddedWithItsErrorBars) {
 }
 
 }  // namespace
+
+namespace {
+
+using rbcsim::report::pries1990_tube_to_discharge_hematocrit;
+using rbcsim::report::pries1992_relative_apparent_viscosity;
+
+// The fits as coded here against the table share/reference computed from them in another
+// language (Python, 6 significant digits): a mistyped constant shows in some row.
+TEST(PriesTubeFlow, FitsReproduceTheTableComputedFromThemElsewhere) {
+  const auto& rows = rbcsim::report::pries_tube_flow_table();
+  ASSERT_EQ(rows.size(), 18u);  // D 5-100 um at H_D 0.30 and 0.45
+  for (const auto& row : rows) {
+    EXPECT_NEAR(pries1992_relative_apparent_viscosity(row.diameter_um, row.discharge_hematocrit),
+                row.relative_apparent_viscosity, 1e-5 * row.relative_apparent_viscosity)
+        << row.diameter_um << " um, H_D " << row.discharge_hematocrit;
+    EXPECT_NEAR(pries1990_tube_to_discharge_hematocrit(row.diameter_um, row.discharge_hematocrit),
+                row.tube_to_discharge_hematocrit, 1e-5 * row.tube_to_discharge_hematocrit)
+        << row.diameter_um << " um, H_D " << row.discharge_hematocrit;
+  }
+}
+
+// What the fits are for: plasma alone has viscosity 1; the apparent viscosity at H_D 0.45 falls
+// from 5 um to a minimum near 7-8 um and rises again (Fahraeus-Lindqvist); H_T < H_D in narrow
+// tubes, approaching H_D in wide ones (Fahraeus).
+TEST(PriesTubeFlow, FitsShowTheFahraeusAndFahraeusLindqvistEffects) {
+  for (const double diameter_um : {5.0, 10.0, 40.0, 200.0}) {
+    EXPECT_NEAR(pries1992_relative_apparent_viscosity(diameter_um, 0.0), 1.0, 1e-12);
+  }
+  const auto at_045 = [](double d) { return pries1992_relative_apparent_viscosity(d, 0.45); };
+  EXPECT_LT(at_045(7.5), at_045(5.0));
+  EXPECT_LT(at_045(7.5), at_045(10.0));
+  EXPECT_LT(at_045(10.0), at_045(20.0));
+  EXPECT_LT(at_045(20.0), at_045(40.0));
+  EXPECT_LT(pries1992_relative_apparent_viscosity(20.0, 0.30), at_045(20.0));
+  for (const double diameter_um : {10.0, 20.0, 40.0}) {
+    EXPECT_LT(pries1990_tube_to_discharge_hematocrit(diameter_um, 0.45), 0.9) << diameter_um;
+  }
+  EXPECT_NEAR(pries1990_tube_to_discharge_hematocrit(2000.0, 0.45), 1.0, 1e-3);
+}
+
+// The cell-free-layer rows with their status: three in-vivo values read in a source, two
+// simulation values of a 20 um tube recalled from a figure.
+TEST(CellFreeLayerReference, KeepsEachRowsStatus) {
+  const auto& rows = rbcsim::report::cell_free_layer_reference();
+  ASSERT_EQ(rows.size(), 5u);
+  int recalled_tube_rows = 0;
+  for (const auto& row : rows) {
+    EXPECT_GT(row.cell_free_layer_um, 0.0);
+    EXPECT_GT(row.uncertainty_um, 0.0);
+    EXPECT_TRUE(row.status == "READ_TEXT" || row.status == "RECALLED") << row.status;
+    if (row.status == "RECALLED" && row.hematocrit_kind == "tube" && row.diameter_um == 20.0) {
+      ++recalled_tube_rows;
+    }
+  }
+  EXPECT_EQ(recalled_tube_rows, 2);
+}
+
+}  // namespace

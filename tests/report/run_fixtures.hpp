@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <string>
@@ -40,6 +41,10 @@ struct FixtureRun {
   // Merged into config.json (RFC 7386 merge patch), e.g. {"membrane": {"k_link_kBT": 3}}.
   nlohmann::json config_patch = nlohmann::json::object();
   std::vector<std::string> notices = {};  // config.json run.notices
+  // The name of result.json's object for the command's results when not the command's own (a
+  // suspension is a capillary run with a "suspension" object).
+  std::string section_name = {};
+  std::map<std::string, std::string> files = {};  // further files: name -> contents
 };
 
 inline std::filesystem::path write_run(const std::filesystem::path& directory,
@@ -57,16 +62,22 @@ inline std::filesystem::path write_run(const std::filesystem::path& directory,
                           {"threads", run.threads},
                           {"started_utc", "2024-05-01T12:00:00Z"},
                           {"notices", run.notices}};
-  nlohmann::json result = {{"command", run.command},         {"version", RBCSIM_VERSION},
-                           {"morphology", run.morphology},   {"status", run.status},
-                           {"wall_time_s", run.wall_time_s}, {"threads", run.threads},
-                           {"headline", run.headline},       {"files", nlohmann::json::object()},
-                           {run.command, run.section}};
+  nlohmann::json result = {
+      {"command", run.command},
+      {"version", RBCSIM_VERSION},
+      {"morphology", run.morphology},
+      {"status", run.status},
+      {"wall_time_s", run.wall_time_s},
+      {"threads", run.threads},
+      {"headline", run.headline},
+      {"files", nlohmann::json::object()},
+      {run.section_name.empty() ? run.command : run.section_name, run.section}};
   write_file(directory / "config.json", configuration.dump(2));
   write_file(directory / "result.json", result.dump(2));
   if (!run.time_series_csv.empty()) {
     write_file(directory / "capillary_timeseries.csv", run.time_series_csv);
   }
+  for (const auto& [name, contents] : run.files) write_file(directory / name, contents);
   return directory;
 }
 
@@ -154,6 +165,74 @@ inline FixtureRun capillary_run_with_terms(const std::string& morphology,
                                            const std::string& geometry) {
   auto run = capillary_run(morphology, 0.6e-3, peak_deformation_index, geometry);
   run.forces = forces;
+  return run;
+}
+
+// Cells of one morphology in a suspension: how many, and the radius their centres keep.
+struct SuspendedCells {
+  std::string morphology;
+  int count;
+  double centre_radius_um;
+};
+
+// A suspension in a straight tube (capillary --geometry tube --hematocrit) run for 1 ms and
+// averaged over its second half: result.json's "suspension" object with the given averages,
+// suspension_timeseries.csv relaxing to them, and cells_timeseries.csv with every cell's centre
+// at its morphology's radius.
+inline FixtureRun suspension_run(double diameter_um, double packed_hematocrit,
+                                 double discharge_hematocrit, double relative_viscosity,
+                                 const std::vector<SuspendedCells>& cells) {
+  FixtureRun run{.command = "capillary", .section_name = "suspension"};
+  const double tube_hematocrit = 0.8 * discharge_hematocrit;
+  const double layer_um = 2.0;
+  auto counts = nlohmann::json::object();
+  auto names = nlohmann::json::array();
+  int total = 0;
+  for (const auto& kind : cells) {
+    counts[kind.morphology] = kind.count;
+    names.push_back(kind.morphology);
+    total += kind.count;
+  }
+  run.section = {{"geometry", "tube"},
+                 {"tube_diameter_um", diameter_um},
+                 {"tube_length_um", 40.0},
+                 {"cells", total},
+                 {"cells_per_morphology", counts},
+                 {"morphologies", names},
+                 {"packed_hematocrit", packed_hematocrit},
+                 {"pseudo_shear_rate_per_s", 100.0},
+                 {"averaging_samples", 5},
+                 {"relative_apparent_viscosity", relative_viscosity},
+                 {"relative_apparent_viscosity_sd", 0.01},
+                 {"tube_hematocrit", tube_hematocrit},
+                 {"discharge_hematocrit", discharge_hematocrit},
+                 {"tube_to_discharge_hematocrit", 0.8},
+                 {"cell_free_layer_um", layer_um},
+                 {"samples_with_pierced_cells", 0},
+                 {"force_capped_steps", 0},
+                 {"time_s", 1e-3}};
+  run.headline = {{"relative_apparent_viscosity", relative_viscosity}};
+  run.config_patch = {{"suspension", {{"averaging_fraction", 0.5}}}};
+  std::string flow =
+      "time_s,relative_apparent_viscosity,tube_hematocrit,discharge_hematocrit,"
+      "cell_free_layer_um\n";
+  std::string centres = "time_s,cell_id,morphology_index,radial_position_um\n";
+  for (int sample = 0; sample <= 10; ++sample) {
+    const double time_s = 1e-4 * sample;
+    const double settled = 1.0 - std::exp(-sample / 2.0);
+    flow += std::to_string(time_s) + "," +
+            std::to_string(1.0 + (relative_viscosity - 1.0) * settled) + "," +
+            std::to_string(tube_hematocrit) + "," + std::to_string(discharge_hematocrit) + "," +
+            std::to_string(layer_um * settled) + "\n";
+    int cell = 0;
+    for (std::size_t m = 0; m < cells.size(); ++m) {
+      for (int i = 0; i < cells[m].count; ++i, ++cell) {
+        centres += std::to_string(time_s) + "," + std::to_string(cell) + "," + std::to_string(m) +
+                   "," + std::to_string(cells[m].centre_radius_um) + "\n";
+      }
+    }
+  }
+  run.files = {{"suspension_timeseries.csv", flow}, {"cells_timeseries.csv", centres}};
   return run;
 }
 

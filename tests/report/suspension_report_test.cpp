@@ -1,0 +1,135 @@
+// The report's suspension section: runs of `capillary --geometry tube --hematocrit` against the
+// in-vitro fits of Pries et al., a mixture against discocytes alone, where the cells' centres sit,
+// and a stopped run drawn but not compared.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "report/reference_data.hpp"
+#include "report/report.hpp"
+#include "report/run_fixtures.hpp"
+#include "support/scratch_directory.hpp"
+#include "support/xml_document.hpp"
+
+namespace {
+
+using rbcsim::report::build_report;
+using rbcsim::report::pries1992_relative_apparent_viscosity;
+using rbcsim::report::read_run_directories;
+using rbcsim::testing::parse_xml;
+using rbcsim::testing::suspension_run;
+using rbcsim::testing::write_run;
+
+std::vector<std::string> series_labels(const rbcsim::testing::XmlDocument& page) {
+  std::vector<std::string> labels;
+  for (const auto i : page.find("g", "series")) {
+    labels.push_back(page.elements[i].attribute("data-label"));
+  }
+  return labels;
+}
+
+bool contains(const std::vector<std::string>& labels, const std::string& label) {
+  return std::find(labels.begin(), labels.end(), label) != labels.end();
+}
+
+// Discocytes 5 % above the fit at their measured H_D, a mixture 30 % above it: the verdict
+// tells them apart, and the mixture is set beside the discocytes of the same tube and
+// hematocrit.
+TEST(SuspensionReport, ComparesEachRunWithPriesAndAMixtureWithDiscocytesAlone) {
+  rbcsim::testing::ScratchDirectory scratch;
+  const double fit = pries1992_relative_apparent_viscosity(20.0, 0.35);
+  const auto plain = suspension_run(20.0, 0.30, 0.35, 1.05 * fit, {{"discocyte", 10, 3.0}});
+  const auto mixed = suspension_run(20.0, 0.31, 0.35, 1.30 * fit,
+                                    {{"discocyte", 7, 3.0}, {"echinocyte-III", 3, 7.5}});
+  const auto documents = build_report(read_run_directories(
+      {write_run(scratch.path() / "plain", plain), write_run(scratch.path() / "mixed", mixed)}));
+  const auto page = parse_xml(documents.html);
+  ASSERT_EQ(page.error, "");
+
+  const auto& section = documents.summary.at("suspension");
+  ASSERT_EQ(section.at("runs").size(), 2u);
+  std::map<std::string, std::string> viscosity_verdicts;
+  for (const auto& comparison : section.at("comparisons")) {
+    const auto what = comparison.at("comparison").get<std::string>();
+    if (what.ends_with("relative apparent viscosity")) {
+      viscosity_verdicts[what] = comparison.at("verdict").get<std::string>();
+    }
+  }
+  EXPECT_EQ(
+      viscosity_verdicts,
+      (std::map<std::string, std::string>{
+          {"suspension D 20 um, H_T 0.3: 10 discocyte: relative apparent viscosity", "within 15 %"},
+          {"suspension D 20 um, H_T 0.31: 7 discocyte + 3 echinocyte-III: relative apparent "
+           "viscosity",
+           "differs by more than 15 %"}}));
+  // The verdict section carries every comparison of the suspension section.
+  std::size_t suspension_rows = 0;
+  for (const auto& row : documents.summary.at("verdict")) {
+    if (row.at("comparison").get<std::string>().starts_with("suspension ")) ++suspension_rows;
+  }
+  EXPECT_EQ(suspension_rows, section.at("comparisons").size());
+
+  ASSERT_EQ(section.at("mixtures").size(), 1u);
+  const auto& mixture = section.at("mixtures")[0];
+  EXPECT_NEAR(mixture.at("ratio").get<double>(), 1.30 / 1.05, 1e-12);
+  EXPECT_TRUE(mixture.at("resolved_beyond_twice_the_spread").get<bool>());
+
+  // Time plots for both runs, each diameter plot with the fits, and the centres of each
+  // morphology of the mixture as a series of its own.
+  const auto labels = series_labels(page);
+  EXPECT_TRUE(contains(labels, "D 20 um, H_T 0.3: 10 discocyte: H_D"));
+  EXPECT_TRUE(contains(labels, "Pries et al. 1992 in vitro, H_D 0.45"));
+  EXPECT_TRUE(contains(labels, "Pries et al. 1990 at each run's measured H_D"));
+  EXPECT_TRUE(
+      contains(labels, "D 20 um, H_T 0.31: 7 discocyte + 3 echinocyte-III: echinocyte-III"));
+}
+
+// The centres' radial distribution is normalised by area: centres all in the outermost ring of
+// ten show there as 1 / (its share of the cross-section, 1 - 0.9^2 = 0.19) and as 0 elsewhere;
+// a morphology spread evenly over the rings' midpoints shows share of centres over share of area.
+TEST(SuspensionReport, CentreDistributionIsRelativeToAnEvenSpread) {
+  rbcsim::testing::ScratchDirectory scratch;
+  const auto run =
+      suspension_run(20.0, 0.3, 0.35, 1.3, {{"discocyte", 4, 9.5}, {"stomatocyte-II", 2, 0.5}});
+  const auto documents =
+      build_report(read_run_directories({write_run(scratch.path() / "wall", run)}));
+  const auto& density = documents.summary.at("suspension").at("runs")[0].at("centre_density");
+  const auto rings = density.at("ring_midpoints_r_over_R").get<std::vector<double>>();
+  ASSERT_EQ(rings.size(), 10u);
+  EXPECT_DOUBLE_EQ(rings.front(), 0.05);
+  EXPECT_DOUBLE_EQ(rings.back(), 0.95);
+  const auto at_wall = density.at("discocyte").get<std::vector<double>>();
+  const auto at_axis = density.at("stomatocyte-II").get<std::vector<double>>();
+  for (std::size_t ring = 0; ring < 9; ++ring) EXPECT_EQ(at_wall[ring], 0.0) << ring;
+  EXPECT_NEAR(at_wall[9], 1.0 / 0.19, 1e-12);
+  EXPECT_NEAR(at_axis[0], 1.0 / 0.01, 1e-9);  // the innermost ring holds 1 % of the area
+  const auto page = parse_xml(documents.html);
+  ASSERT_EQ(page.error, "");
+  EXPECT_TRUE(contains(series_labels(page),
+                       "D 20 um, H_T 0.3: 4 discocyte + 2 stomatocyte-II: "
+                       "stomatocyte-II"));
+}
+
+// A run that failed is drawn dashed in the time plots and left out of the comparisons.
+TEST(SuspensionReport, StoppedRunIsDrawnButNotCompared) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto failed = suspension_run(10.0, 0.3, 0.4, 1.3, {{"discocyte", 3, 2.0}});
+  failed.status = "failed";
+  const auto ok = suspension_run(20.0, 0.3, 0.4, 1.3, {{"discocyte", 10, 3.0}});
+  const auto documents = build_report(read_run_directories(
+      {write_run(scratch.path() / "failed", failed), write_run(scratch.path() / "ok", ok)}));
+  const auto page = parse_xml(documents.html);
+  ASSERT_EQ(page.error, "");
+  const auto& section = documents.summary.at("suspension");
+  ASSERT_EQ(section.at("runs").size(), 1u);
+  EXPECT_EQ(section.at("runs")[0].at("label"), "D 20 um, H_T 0.3: 10 discocyte");
+  for (const auto& comparison : section.at("comparisons")) {
+    EXPECT_EQ(comparison.at("comparison").get<std::string>().find("D 10 um"), std::string::npos);
+  }
+  EXPECT_TRUE(contains(series_labels(page), "D 10 um, H_T 0.3: 3 discocyte (failed)"));
+  EXPECT_NE(documents.html.find("left out of the averages and comparisons: " +
+                                (scratch.path() / "failed").generic_string()),
+            std::string::npos);
+}
+
+}  // namespace
