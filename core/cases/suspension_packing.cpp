@@ -94,7 +94,7 @@ class Packer {
     // firmly (the contact law vanishes at its range).
     const auto statistics = contact::add_cell_contact_forces(
         positions_, owners_, {1.0, kPushReach * settings_.cell_gap_um},
-        contact::PeriodicBox{{tube_.length_um, 0.0, 0.0}}, pushes, list_);
+        contact::PeriodicBox{{tube_.length_um, 0.0, 0.0}}, pushes, contact_workspace_);
     bool overlap = statistics.closest_um < settings_.cell_gap_um;
     const double wall_limit_um = tube_.radius_um - settings_.wall_gap_um;
     for (std::size_t v = 0; v < positions_.size(); ++v) {
@@ -186,7 +186,7 @@ class Packer {
   std::vector<RigidCell> cells_;
   std::vector<std::uint32_t> owners_;
   std::vector<Vec3> positions_;
-  contact::CellList list_;
+  contact::ContactWorkspace contact_workspace_;
 };
 
 }  // namespace

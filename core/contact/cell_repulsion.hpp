@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <vector>
 
 #include "common/vec3.hpp"
 #include "contact/cell_list.hpp"
@@ -26,21 +27,43 @@ struct ContactParameters {
 
 // What one evaluation found, over all vertices.
 struct ContactStatistics {
-  std::size_t pairs_in_range = 0;   // ordered pairs (i, j) of different cells within the range
-  std::size_t close_pairs = 0;      // of those, within a quarter of the range: near overlap
+  std::size_t pairs_in_range = 0;  // ordered pairs (i, j) of different cells within the range
+  std::size_t close_pairs = 0;     // of those, within a quarter of the range: near overlap
   double closest_um = std::numeric_limits<double>::infinity();
+};
+
+// What the contact keeps from one evaluation to the next, so that a step reuses its memory.
+struct ContactWorkspace {
+  // Per cell (a run of equal owners): its first vertex (and, last, the end), its bounding box as
+  // centre and half-extent, and the other cells whose grown boxes meet its own.
+  std::vector<std::size_t> cell_start;
+  std::vector<Vec3> box_centre_um;
+  std::vector<Vec3> box_half_um;
+  std::vector<std::vector<std::uint32_t>> near_cells;
+  // The vertices that lie within the range of another cell's box, ascending, with their
+  // positions and owners: only they can have a partner, so only they are binned.
+  std::vector<unsigned char> is_candidate;
+  std::vector<std::uint32_t> candidates;
+  std::vector<Vec3> candidate_positions_um;
+  std::vector<std::uint32_t> candidate_owners;
+  CellList list;
 };
 
 // Adds the contact forces to forces_pN (one per position). `owner[i]` is the cell of vertex i,
 // the vertices grouped cell by cell (owner non-decreasing); pairs of one cell never interact (the
-// membrane's own forces hold it together), and are skipped without being looked at. Each vertex sums
-// its own pairs in the cell list's order (a gather: parallel and thread-count independent).
+// membrane's own forces hold it together), and are skipped without being looked at.
+// Two phases: a broad one keeps the vertices within the range of another cell's bounding box
+// (boxes taken with minimum images, so a cell across a periodic seam keeps a compact box; cells
+// paired by their boxes, O(cells^2), cheap beside O(vertices) up to thousands of cells); a narrow
+// one bins those in the cell list, and each sums its own pairs in the list's order (a gather:
+// parallel and thread-count independent). Every pair within the range has both vertices kept, so
+// the pairs found are those of binning every vertex.
 // Throws std::invalid_argument for mismatched sizes, ungrouped owners or a non-positive range with
 // a force.
 ContactStatistics add_cell_contact_forces(std::span<const Vec3> positions_um,
                                           std::span<const std::uint32_t> owner,
                                           const ContactParameters& parameters,
                                           const PeriodicBox& box, std::span<Vec3> forces_pN,
-                                          CellList& workspace);
+                                          ContactWorkspace& workspace);
 
 }  // namespace rbcsim::contact

@@ -126,7 +126,7 @@ void CoupledSimulation::add_contact_forces() {
   contact_forces_pN_.assign(contact_positions_um_.size(), Vec3::Zero());
   contact_statistics_ =
       contact::add_cell_contact_forces(contact_positions_um_, contact_owners_, contact_,
-                                       contact_box_, contact_forces_pN_, contact_list_);
+                                       contact_box_, contact_forces_pN_, contact_workspace_);
   if (contact_statistics_.close_pairs > 0) ++close_contact_steps_;
   std::size_t offset = 0;
   for (auto& cell : cells_) {

@@ -222,7 +222,7 @@ class CoupledSimulation {
   std::vector<ExternalForce> external_forces_;
   contact::ContactParameters contact_;
   contact::PeriodicBox contact_box_;
-  contact::CellList contact_list_;
+  contact::ContactWorkspace contact_workspace_;
   contact::ContactStatistics contact_statistics_;
   std::size_t close_contact_steps_ = 0;
   // Every cell's vertices one after the other: the contact's input and output.

@@ -48,8 +48,8 @@ PairSet pairs_within(const std::vector<Vec3>& points, double reach, const Period
 // two bins long, where the -1 and +1 neighbour bins coincide), and none is visited twice.
 TEST(CellList, FindsEveryPairTheBruteForceSearchFinds) {
   const auto points = random_points(600, Vec3(7.0, 5.0, 3.1), 11);
-  for (const PeriodicBox box : {PeriodicBox{}, PeriodicBox{{7.0, 0.0, 0.0}},
-                                PeriodicBox{{7.0, 5.0, 3.1}}}) {
+  for (const PeriodicBox box :
+       {PeriodicBox{}, PeriodicBox{{7.0, 0.0, 0.0}}, PeriodicBox{{7.0, 5.0, 3.1}}}) {
     CellList list;
     list.build(points, 1.5, box);
     const auto expected = pairs_within(points, 1.5, box, nullptr);
@@ -75,7 +75,7 @@ TEST(CellList, RefusesAPeriodShorterThanTheReach) {
 // partner's exactly opposite; at the range and beyond, nothing; vertices of one cell, nothing.
 TEST(CellContact, FollowsItsLawBetweenCellsOnly) {
   const ContactParameters parameters{8.0, 0.5};
-  CellList workspace;
+  ContactWorkspace workspace;
   const std::vector<Vec3> positions{Vec3(0.0, 0.0, 0.0), Vec3(0.15, 0.2, 0.0)};  // d = 0.25
   std::vector<Vec3> forces(2, Vec3::Zero());
   const std::vector<std::uint32_t> owners{0, 1};
@@ -97,9 +97,8 @@ TEST(CellContact, FollowsItsLawBetweenCellsOnly) {
   const std::vector<Vec3> three(3, Vec3::Zero());
   std::vector<Vec3> three_forces(3, Vec3::Zero());
   const std::vector<std::uint32_t> interleaved{0, 1, 0};
-  EXPECT_THROW(
-      add_cell_contact_forces(three, interleaved, parameters, {}, three_forces, workspace),
-      std::invalid_argument);
+  EXPECT_THROW(add_cell_contact_forces(three, interleaved, parameters, {}, three_forces, workspace),
+               std::invalid_argument);
 
   const std::vector<Vec3> apart{Vec3::Zero(), Vec3(0.5, 0.0, 0.0)};
   std::vector<Vec3> none(2, Vec3::Zero());
@@ -110,7 +109,7 @@ TEST(CellContact, FollowsItsLawBetweenCellsOnly) {
 // Across a periodic seam the nearest image pushes: vertices at x = 0.1 and 9.9 in a period of 10
 // are 0.2 apart, and the first is pushed towards +x.
 TEST(CellContact, ActsAcrossAPeriodicSeam) {
-  CellList workspace;
+  ContactWorkspace workspace;
   const std::vector<Vec3> positions{Vec3(0.1, 0.0, 0.0), Vec3(9.9, 0.0, 0.0)};
   std::vector<Vec3> forces(2, Vec3::Zero());
   const std::vector<std::uint32_t> owners{0, 1};
@@ -125,7 +124,8 @@ TEST(CellContact, ActsAcrossAPeriodicSeam) {
 TEST(CellContact, NetForceVanishesAndThreadsDoNotMatter) {
   auto positions = random_points(2000, Vec3(6.0, 6.0, 6.0), 5);
   std::vector<std::uint32_t> owners;
-  for (std::size_t p = 0; p < positions.size(); ++p) owners.push_back(static_cast<std::uint32_t>(5 * p / positions.size()));
+  for (std::size_t p = 0; p < positions.size(); ++p)
+    owners.push_back(static_cast<std::uint32_t>(5 * p / positions.size()));
   const ContactParameters parameters{10.0, 0.6};
   const PeriodicBox box{{6.0, 0.0, 0.0}};
   // Some cells a few periods away: positions are never wrapped, the contact wraps them.
@@ -133,7 +133,7 @@ TEST(CellContact, NetForceVanishesAndThreadsDoNotMatter) {
   std::vector<std::vector<Vec3>> by_threads;
   for (const int threads : {1, 2}) {
     const ThreadCountScope scope(threads);
-    CellList workspace;
+    ContactWorkspace workspace;
     std::vector<Vec3> forces(positions.size(), Vec3::Zero());
     add_cell_contact_forces(positions, owners, parameters, box, forces, workspace);
     by_threads.push_back(forces);
@@ -147,6 +147,62 @@ TEST(CellContact, NetForceVanishesAndThreadsDoNotMatter) {
   }
   EXPECT_GT(magnitude, 1000.0);
   EXPECT_LT(net.norm(), 1e-12 * magnitude);
+}
+
+// The plain reference: every pair of different cells, O(points^2), minimum images.
+std::vector<Vec3> brute_force_contact(const std::vector<Vec3>& positions,
+                                      const std::vector<std::uint32_t>& owners,
+                                      const ContactParameters& parameters, const PeriodicBox& box,
+                                      std::size_t& pairs) {
+  std::vector<Vec3> forces(positions.size(), Vec3::Zero());
+  pairs = 0;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    for (std::size_t j = 0; j < positions.size(); ++j) {
+      if (owners[i] == owners[j]) continue;
+      const Vec3 separation = box.minimum_image(positions[i] - positions[j]);
+      const double distance = separation.norm();
+      if (distance >= parameters.range_um) continue;
+      ++pairs;
+      const double closeness = 1.0 - distance / parameters.range_um;
+      forces[i] += (parameters.force_at_contact_pN * closeness * closeness / distance) * separation;
+    }
+  }
+  return forces;
+}
+
+// Forty "cells" (balls of 60 points, 1.2 um across) scattered in a box periodic along x, some
+// touching, one across the seam, some whole periods away: the broad phase (cell boxes) keeps
+// every vertex with a partner, so the forces and pair count are the brute-force search's (the
+// order of summation differs, hence 1e-12).
+TEST(CellContact, EqualsTheBruteForceSumOverEveryPair) {
+  std::mt19937 generator(3);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const PeriodicBox box{{12.0, 0.0, 0.0}};
+  std::vector<Vec3> positions;
+  std::vector<std::uint32_t> owners;
+  for (std::uint32_t cell = 0; cell < 40; ++cell) {
+    Vec3 centre = random_vec3(unit, generator).cwiseProduct(Vec3(12.0, 6.0, 6.0));
+    if (cell == 0) centre.x() = 11.9;       // across the seam
+    if (cell % 9 == 4) centre.x() += 24.0;  // two periods on
+    for (int p = 0; p < 60; ++p) {
+      positions.push_back(centre + 0.6 * (random_vec3(unit, generator) - Vec3(0.5, 0.5, 0.5)));
+      owners.push_back(cell);
+    }
+  }
+  const ContactParameters parameters{5.0, 0.5};
+  std::size_t expected_pairs = 0;
+  const auto expected = brute_force_contact(positions, owners, parameters, box, expected_pairs);
+  ContactWorkspace workspace;
+  std::vector<Vec3> forces(positions.size(), Vec3::Zero());
+  const auto statistics =
+      add_cell_contact_forces(positions, owners, parameters, box, forces, workspace);
+  EXPECT_GT(expected_pairs, 100u);
+  EXPECT_EQ(statistics.pairs_in_range, expected_pairs);
+  // Some cells are apart from all others: the broad phase must have dropped their vertices.
+  EXPECT_LT(workspace.candidates.size(), positions.size());
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    EXPECT_LT((forces[i] - expected[i]).norm(), 1e-12 * (1.0 + expected[i].norm())) << i;
+  }
 }
 
 }  // namespace
