@@ -13,8 +13,11 @@ shift || true
 
 # libexpat1-dev: the report and coupling tests read their HTML and VTK output back with a strict
 # XML parser.
-required_packages=(cmake make g++ libcli11-dev libeigen3-dev nlohmann-json3-dev libassimp-dev
-                   libgtest-dev libexpat1-dev)
+# ninja-build: a new build directory is generated for Ninja, which compiles a target's sources
+# while the libraries it links are still being built (make waits for them: on 2 cores one core
+# idled through the chain of libraries and the rbcsim binary).
+required_packages=(cmake ninja-build g++ libcli11-dev libeigen3-dev nlohmann-json3-dev
+                   libassimp-dev libgtest-dev libexpat1-dev)
 read -r -a extra_packages <<<"${RBCSIM_EXTRA_PACKAGES:-}"
 required_packages+=("${extra_packages[@]}")
 
@@ -37,5 +40,8 @@ if ((${#missing_packages[@]})); then
   fi
 fi
 
-cmake -S "$repo_root" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+# An existing build directory keeps the generator it was made with.
+generator=()
+[[ -f "$build_dir/CMakeCache.txt" ]] || generator=(-G Ninja)
+cmake -S "$repo_root" -B "$build_dir" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
 cmake --build "$build_dir" --parallel "$(nproc)"
