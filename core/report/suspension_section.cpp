@@ -223,6 +223,15 @@ std::vector<Comparison> comparisons_of(const RunDirectory& run, const std::strin
              ? "within the uncertainty"
              : "outside the uncertainty"});
   }
+  // Cells that passed through each other are not a suspension: the numbers are shown, the
+  // verdict withheld.
+  const int pierced = run.section().at("samples_with_pierced_cells").integer();
+  if (pierced > 0) {
+    for (auto& comparison : comparisons) {
+      comparison.verdict =
+          "not a result: cells pierced each other in " + std::to_string(pierced) + " samples";
+    }
+  }
   return comparisons;
 }
 

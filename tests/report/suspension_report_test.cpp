@@ -110,6 +110,20 @@ TEST(SuspensionReport, CentreDistributionIsRelativeToAnEvenSpread) {
                        "stomatocyte-II"));
 }
 
+// A run in which cells passed through each other keeps its numbers but gets no verdict.
+TEST(SuspensionReport, PiercedCellsWithholdTheVerdict) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto run = suspension_run(10.0, 0.2, 0.25, 1.13, {{"discocyte", 5, 2.0}});
+  run.section["samples_with_pierced_cells"] = 16;
+  const auto documents =
+      build_report(read_run_directories({write_run(scratch.path() / "pierced", run)}));
+  const auto& comparisons = documents.summary.at("suspension").at("comparisons");
+  ASSERT_EQ(comparisons.size(), 2u);
+  for (const auto& comparison : comparisons) {
+    EXPECT_EQ(comparison.at("verdict"), "not a result: cells pierced each other in 16 samples");
+  }
+}
+
 // A run that failed is drawn dashed in the time plots and left out of the comparisons.
 TEST(SuspensionReport, StoppedRunIsDrawnButNotCompared) {
   rbcsim::testing::ScratchDirectory scratch;
