@@ -75,8 +75,8 @@ bool has_averages(const RunDirectory& run) {
   return run.succeeded() && number_of(run, "averaging_samples") > 0;
 }
 
-std::vector<svg::PlotPoint> over_time(const RunDirectory& run, std::string_view column) {
-  const auto table = run.csv(std::string(kTimeSeriesFile));
+// One column of the run's suspension_timeseries.csv (read once per run) against time.
+std::vector<svg::PlotPoint> over_time(const io::CsvTable& table, std::string_view column) {
   const auto time_s = table.numbers("time_s");
   const auto values = table.numbers(column);
   std::vector<svg::PlotPoint> points;
@@ -339,14 +339,15 @@ void add_time_plots(const RunList& traced, const std::vector<std::string>& label
     const auto label = label_with_status(run, labels[i]);
     const auto colour = svg::palette_colour(i);
     const bool stopped = !run.succeeded();
-    viscosity.series.push_back({label, over_time(run, "relative_apparent_viscosity"), colour,
+    const auto series = run.csv(std::string(kTimeSeriesFile));
+    viscosity.series.push_back({label, over_time(series, "relative_apparent_viscosity"), colour,
                                 svg::Marker::none, true, stopped});
-    hematocrit.series.push_back({label + ": H_T", over_time(run, "tube_hematocrit"), colour,
+    hematocrit.series.push_back({label + ": H_T", over_time(series, "tube_hematocrit"), colour,
                                  svg::Marker::none, true, false});
-    hematocrit.series.push_back({label + ": H_D", over_time(run, "discharge_hematocrit"), colour,
+    hematocrit.series.push_back({label + ": H_D", over_time(series, "discharge_hematocrit"), colour,
                                  svg::Marker::none, true, true});
     layer.series.push_back(
-        {label, over_time(run, "cell_free_layer_um"), colour, svg::Marker::none, true, stopped});
+        {label, over_time(series, "cell_free_layer_um"), colour, svg::Marker::none, true, stopped});
   }
   const std::string source = " (" + std::string(kTimeSeriesFile) + ").";
   section.blocks.emplace_back(
