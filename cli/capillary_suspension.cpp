@@ -31,8 +31,8 @@ std::vector<std::size_t> cells_of(const std::vector<cases::SuspensionMorphology>
     volumes_um3.push_back(mesh::enclosed_volume_um3(morphology.mesh));
   }
   const auto counts = cases::cell_counts_for(
-      hematocrit, std::numbers::pi * radius_um * radius_um * settings.tube_length_um,
-      mix.fractions, volumes_um3);
+      hematocrit, std::numbers::pi * radius_um * radius_um * settings.tube_length_um, mix.fractions,
+      volumes_um3);
   std::vector<std::size_t> cells;
   for (std::size_t m = 0; m < counts.size(); ++m) cells.insert(cells.end(), counts[m], m);
   return cells;
@@ -55,21 +55,24 @@ void print_summary(const nlohmann::ordered_json& result, const cases::Suspension
                    const RunDirectory& directory) {
   const auto& s = result["suspension"];
   std::printf("capillary (tube suspension), %s\n", result["morphology"].get<std::string>().c_str());
-  std::printf("tube %.4g um x %.4g um (periodic), %zu cells %s, hematocrit %.4f (packed in %zu "
-              "iterations)\n",
-              s["tube_diameter_um"].get<double>(), s["tube_length_um"].get<double>(),
-              run.cell_morphologies.size(), s["cells_per_morphology"].dump().c_str(),
-              run.packed_hematocrit, run.packing_iterations);
-  std::printf("drive: plasma mean velocity %.4g m/s (pseudo-shear rate %.4g 1/s), gradient %.4g "
-              "Pa/m\n",
-              s["plasma_mean_velocity_m_per_s"].get<double>(), run.pseudo_shear_rate_per_s,
-              run.pressure_gradient_Pa_per_m);
+  std::printf(
+      "tube %.4g um x %.4g um (periodic), %zu cells %s, hematocrit %.4f (packed in %zu "
+      "iterations)\n",
+      s["tube_diameter_um"].get<double>(), s["tube_length_um"].get<double>(),
+      run.cell_morphologies.size(), s["cells_per_morphology"].dump().c_str(), run.packed_hematocrit,
+      run.packing_iterations);
+  std::printf(
+      "drive: plasma mean velocity %.4g m/s (pseudo-shear rate %.4g 1/s), gradient %.4g "
+      "Pa/m\n",
+      s["plasma_mean_velocity_m_per_s"].get<double>(), run.pseudo_shear_rate_per_s,
+      run.pressure_gradient_Pa_per_m);
   const auto& a = run.averages;
-  std::printf("over the last %zu samples: relative apparent viscosity %.4f +- %.3g, discharge "
-              "hematocrit %.4f (H_T/H_D %.4f), cell-free layer %.3f um\n",
-              a.samples, a.relative_apparent_viscosity, a.relative_apparent_viscosity_sd,
-              a.discharge_hematocrit, s["tube_to_discharge_hematocrit"].get<double>(),
-              a.cell_free_layer_um);
+  std::printf(
+      "over the last %zu samples: relative apparent viscosity %.4f +- %.3g, discharge "
+      "hematocrit %.4f (H_T/H_D %.4f), cell-free layer %.3f um\n",
+      a.samples, a.relative_apparent_viscosity, a.relative_apparent_viscosity_sd,
+      a.discharge_hematocrit, s["tube_to_discharge_hematocrit"].get<double>(),
+      a.cell_free_layer_um);
   std::printf("%zu steps (%.4g s), steps with a near overlap %zu: %s\n", run.steps, run.time_s,
               run.close_contact_steps, run.stop_reason.c_str());
   std::printf("wall time %.1f s, %d thread(s); run directory %s\n", directory.elapsed_s(),
@@ -90,19 +93,14 @@ bool wants_suspension(const config::Config& config) {
                      "suspensions run in the straight periodic tube only: add --geometry tube");
   }
   if (tube && !config.string("capillary.wall_file").empty()) {
-    throw InputError("capillary.wall_file", "a suspension runs in the built-in tube, not a wall file");
+    throw InputError("capillary.wall_file",
+                     "a suspension runs in the built-in tube, not a wall file");
   }
   return tube;
 }
 
 void run_suspension_command(const config::ConfigRequest& request, const config::Config& config,
                             const CommonOptions& common, const CheckpointOptions& checkpoint) {
-  if (!checkpoint.every.empty()) {
-    throw InputError("--checkpoint-every", "suspension runs do not write checkpoints yet");
-  }
-  if (!checkpoint.resume_directory.empty()) {
-    throw InputError("--resume", "suspension runs do not write checkpoints yet");
-  }
   if (config.integer("capillary.orientations") != 1) {
     throw InputError("capillary.orientations",
                      "release orientations are for one cell; a suspension's cells are turned at "
@@ -112,24 +110,22 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
   const auto compression = setup::suspension_compression_from(config);
   const auto simulated = setup::compressed_suspension_config(config, compression.factor);
   const auto settings = setup::suspension_settings_from(simulated);
-  const auto morphologies =
-      setup::suspension_morphologies_from(request, mix, compression.factor);
-  const auto cells =
-      cells_of(morphologies, mix, settings, config.number("suspension.hematocrit"));
+  const auto morphologies = setup::suspension_morphologies_from(request, mix, compression.factor);
+  const auto cells = cells_of(morphologies, mix, settings, config.number("suspension.hematocrit"));
   std::vector<std::int32_t> kinds(cells.begin(), cells.end());
 
   const RunDirectory directory("capillary", common, config);
   std::string names;
   for (const auto& name : mix.names) names += (names.empty() ? "" : ", ") + name;
-  const setup::CellMesh described{morphologies.front().mesh,
-                                  "suspension of " + std::to_string(cells.size()) + " cells (" +
-                                      names + ")",
-                                  {},
-                                  {}};
-  const cases::SuspensionPhysics physics{setup::fluid_parameters_from(simulated),
-                                         setup::coupling_parameters_from(simulated,
-                                                                         directory.path()),
-                                         config::make_unit_converter(simulated)};
+  const setup::CellMesh described{
+      morphologies.front().mesh,
+      "suspension of " + std::to_string(cells.size()) + " cells (" + names + ")",
+      {},
+      {}};
+  const cases::SuspensionPhysics physics{
+      setup::fluid_parameters_from(simulated),
+      setup::coupling_parameters_from(simulated, directory.path()),
+      config::make_unit_converter(simulated)};
   const auto intervals = setup::snapshot_intervals_from(simulated, physics.units);
   const Progress progress(common);
   bool started = false;
@@ -138,10 +134,13 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
         coupling::add_vtk_output(simulation, directory.path(), intervals, kinds);
         simulation.add_observer(
             {"progress", kProgressIntervalSteps, [&](const coupling::CoupledSimulation& s) {
-               progress.update("suspension: step " + std::to_string(s.time_step()) + ", t = " +
-                               format_number(s.time_s() * compression.factor) + " s, " +
+               progress.update("suspension: step " + std::to_string(s.time_step()) +
+                               ", t = " + format_number(s.time_s() * compression.factor) + " s, " +
                                format_number(std::round(directory.elapsed_s())) + " s");
              }});
+        // After the output observers (a resume restores their state), before the directory is
+        // started (a refused checkpoint leaves no file behind).
+        wire_checkpoints(simulation, checkpoint, directory, config);
         directory.start(config, described);
         started = true;
       });
@@ -163,11 +162,10 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
       {"factor", compression.factor},
       {"physical_reynolds_number", compression.physical_reynolds_number},
       {"simulated_reynolds_number", compression.simulated_reynolds_number}};
-  result["headline"] = {
-      {"relative_apparent_viscosity", run.averages.relative_apparent_viscosity},
-      {"discharge_hematocrit", run.averages.discharge_hematocrit},
-      {"tube_hematocrit", run.averages.tube_hematocrit},
-      {"cell_free_layer_um", run.averages.cell_free_layer_um}};
+  result["headline"] = {{"relative_apparent_viscosity", run.averages.relative_apparent_viscosity},
+                        {"discharge_hematocrit", run.averages.discharge_hematocrit},
+                        {"tube_hematocrit", run.averages.tube_hematocrit},
+                        {"cell_free_layer_um", run.averages.cell_free_layer_um}};
   result["files"] = {{"config", "config.json"},
                      {"timeseries", "suspension_timeseries.csv"},
                      {"cells", "cells_timeseries.csv"},

@@ -5,12 +5,15 @@
 #include <memory>
 #include <numbers>
 #include <numeric>
+#include <optional>
+#include <string>
 
 #include "cases/capillary_observables.hpp"
 #include "cases/release_orientations.hpp"
 #include "cases/suspension_packing.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/state_archive.hpp"
 #include "geometry/lattice_grid.hpp"
 #include "geometry/tube_wall.hpp"
 #include "geometry/voxelise.hpp"
@@ -34,7 +37,7 @@ void validate(const SuspensionSettings& settings) {
   require_positive_setting(settings.tube_diameter_um, "suspension.tube_diameter_um");
   require_positive_setting(settings.tube_length_um, "suspension.tube_length_um");
   require_positive_setting(settings.plasma_mean_velocity_m_per_s,
-                   "suspension.plasma_mean_velocity_m_per_s");
+                           "suspension.plasma_mean_velocity_m_per_s");
   require_positive_setting(settings.duration_s, "suspension.duration_s");
   require_positive_setting(settings.sample_interval_s, "suspension.sample_interval_s");
   require_positive_setting(settings.wall_repulsion_range_um, "suspension.wall_repulsion_range_um");
@@ -55,8 +58,9 @@ void require_contact_reaches_across_edges(std::span<const SuspensionMorphology> 
     }
     if (range_um < longest_um) {
       throw InputError("suspension.contact_range_um",
-                       format_number(range_um) + " um is shorter than the longest membrane edge of " +
-                           morphology.name + " (" + format_number(longest_um) +
+                       format_number(range_um) +
+                           " um is shorter than the longest membrane edge of " + morphology.name +
+                           " (" + format_number(longest_um) +
                            " um): a vertex could pass between another cell's vertices");
     }
   }
@@ -108,8 +112,8 @@ std::pair<double, double> cell_free_layer_um(const coupling::CoupledSimulation& 
       const double x = position.x() - length_um * std::floor(position.x() / length_um);
       const int slice = std::min(slices - 1, static_cast<int>(x / length_um * slices));
       const double angle = std::atan2(position.z(), position.y()) + std::numbers::pi;
-      const int sector = std::min(sectors - 1, static_cast<int>(angle / (2.0 * std::numbers::pi) *
-                                                                sectors));
+      const int sector =
+          std::min(sectors - 1, static_cast<int>(angle / (2.0 * std::numbers::pi) * sectors));
       auto& bin = outermost[static_cast<std::size_t>(slice * sectors + sector)];
       bin = std::max(bin, radial_um(position));
     }
@@ -136,16 +140,18 @@ std::size_t pierced_cell_count(const coupling::CoupledSimulation& simulation, do
   }
   const auto pierced =
       find_pierced_cells(positions_um, triangles, contact::PeriodicBox{{length_um, 0.0, 0.0}});
-  return static_cast<std::size_t>(std::ranges::count_if(pierced, [](const auto& other) {
-    return other.has_value();
-  }));
+  return static_cast<std::size_t>(
+      std::ranges::count_if(pierced, [](const auto& other) { return other.has_value(); }));
 }
 
 class SuspensionRecorder {
  public:
-  SuspensionRecorder(SuspensionRun& run, const SuspensionSettings& settings,
-                     std::vector<double> cell_volumes_um3, double plasma_flow_lu)
+  // `sample_steps` receives the step of each sample, for the checkpoint (SuspensionRecord).
+  SuspensionRecorder(SuspensionRun& run, std::vector<std::size_t>& sample_steps,
+                     const SuspensionSettings& settings, std::vector<double> cell_volumes_um3,
+                     double plasma_flow_lu)
       : run_(run),
+        sample_steps_(sample_steps),
         settings_(settings),
         cell_volumes_um3_(std::move(cell_volumes_um3)),
         plasma_flow_lu_(plasma_flow_lu) {}
@@ -184,13 +190,93 @@ class SuspensionRecorder {
     sample.pierced_cells = pierced_cell_count(simulation, settings_.tube_length_um);
     if (sample.pierced_cells > 0) ++run_.samples_with_pierced_cells;
     run_.samples.push_back(sample);
+    sample_steps_.push_back(simulation.time_step());
   }
 
  private:
   SuspensionRun& run_;
+  std::vector<std::size_t>& sample_steps_;
   const SuspensionSettings& settings_;
   std::vector<double> cell_volumes_um3_;
   double plasma_flow_lu_;
+};
+
+// Values per sample and per cell sample in the checkpoint.
+constexpr std::size_t kSuspensionSampleValues = 11;
+constexpr std::size_t kSuspensionCellSampleValues = 8;
+
+// Never stops the run: it carries the samples recorded so far in the checkpoint, so that a resumed
+// run reports what a straight one would. An interrupted run's observers also see the state reached
+// between two sample intervals; that sample (and its cells') is reported by the interrupted run
+// but left out of the checkpoint, which a straight run would not have.
+class SuspensionRecord final : public coupling::StopCriterion {
+ public:
+  SuspensionRecord(SuspensionRun& run, std::vector<std::size_t>& sample_steps,
+                   std::size_t interval_steps, std::size_t cell_count)
+      : run_(run),
+        sample_steps_(sample_steps),
+        interval_steps_(interval_steps),
+        cell_count_(cell_count) {}
+
+  std::optional<std::string> check(const coupling::CoupledSimulation& /*simulation*/) override {
+    return std::nullopt;
+  }
+
+  void save_state(StateArchive& archive, const std::string& prefix) const override {
+    std::vector<double> samples, cells;
+    for (std::size_t i = 0; i < run_.samples.size(); ++i) {
+      if (sample_steps_[i] % interval_steps_ != 0) continue;
+      const auto& s = run_.samples[i];
+      samples.insert(
+          samples.end(),
+          {static_cast<double>(sample_steps_[i]), s.time_s, s.flow_rate_um3_per_s,
+           s.relative_apparent_viscosity, s.tube_hematocrit, s.discharge_hematocrit,
+           s.cell_free_layer_um, s.populated_bin_fraction, static_cast<double>(s.contact_pairs),
+           static_cast<double>(s.close_contact_pairs), static_cast<double>(s.pierced_cells)});
+      for (std::size_t c = 0; c < cell_count_; ++c) {
+        const auto& cell = run_.cell_samples[i * cell_count_ + c];
+        cells.insert(cells.end(),
+                     {cell.time_s, static_cast<double>(cell.cell), cell.centroid_um.x(),
+                      cell.centroid_um.y(), cell.centroid_um.z(), cell.radial_position_um,
+                      cell.velocity_x_m_per_s, cell.deformation_index});
+      }
+    }
+    archive.put(prefix + "samples", std::move(samples));
+    archive.put(prefix + "cell_samples", std::move(cells));
+  }
+
+  void restore_state(StateArchive& archive, const std::string& prefix) override {
+    const auto samples = archive.take(prefix + "samples", std::nullopt);
+    if (samples.size() % kSuspensionSampleValues != 0) {
+      throw InputError(archive.source(), prefix + "samples: not whole samples");
+    }
+    const std::size_t count = samples.size() / kSuspensionSampleValues;
+    const auto cells =
+        archive.take(prefix + "cell_samples", count * cell_count_ * kSuspensionCellSampleValues);
+    run_.samples.clear();
+    run_.cell_samples.clear();
+    sample_steps_.clear();
+    run_.samples_with_pierced_cells = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto* v = samples.data() + i * kSuspensionSampleValues;
+      sample_steps_.push_back(static_cast<std::size_t>(v[0]));
+      run_.samples.push_back({v[1], v[2], v[3], v[4], v[5], v[6], v[7],
+                              static_cast<std::size_t>(v[8]), static_cast<std::size_t>(v[9]),
+                              static_cast<std::size_t>(v[10])});
+      if (run_.samples.back().pierced_cells > 0) ++run_.samples_with_pierced_cells;
+    }
+    for (std::size_t k = 0; k < count * cell_count_; ++k) {
+      const auto* v = cells.data() + k * kSuspensionCellSampleValues;
+      run_.cell_samples.push_back(
+          {v[0], static_cast<std::size_t>(v[1]), Vec3(v[2], v[3], v[4]), v[5], v[6], v[7]});
+    }
+  }
+
+ private:
+  SuspensionRun& run_;
+  std::vector<std::size_t>& sample_steps_;
+  std::size_t interval_steps_;
+  std::size_t cell_count_;
 };
 
 SuspensionAverages averages_of(const std::vector<SuspensionSample>& samples, double end_s,
@@ -272,17 +358,17 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
   run.packing_iterations = packing.iterations;
 
   const double dx_um = physics.units.dx_m() * 1e6;
-  TubeLattice tube{geometry::TubeWall({settings.tube_diameter_um, settings.tube_length_um},
-                                      "suspension"),
-                   {},
-                   {}};
+  TubeLattice tube{
+      geometry::TubeWall({settings.tube_diameter_um, settings.tube_length_um}, "suspension"),
+      {},
+      {}};
   tube.grid_um = geometry::lattice_around(tube.wall, dx_um);
   tube.solid_mask = geometry::voxelise(tube.wall, tube.grid_um);
   physics.units.check_lattice_velocity(2.0 * settings.plasma_mean_velocity_m_per_s,
                                        "suspension.plasma_mean_velocity_m_per_s (peak velocity)");
   // Poiseuille: mean velocity U = G R^2 / (8 rho nu), so the force density G = 8 rho nu U / R^2.
-  const double velocity_lu =
-      physics.units.to_lattice(PhysicalUnit::velocity_m_per_s, settings.plasma_mean_velocity_m_per_s);
+  const double velocity_lu = physics.units.to_lattice(PhysicalUnit::velocity_m_per_s,
+                                                      settings.plasma_mean_velocity_m_per_s);
   const double radius_lu = radius_um / dx_um;
   const double body_force_lu =
       8.0 * physics.units.lattice_kinematic_viscosity() * velocity_lu / (radius_lu * radius_lu);
@@ -301,8 +387,7 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
     return run;
   }
   const double plasma_flow_lu = flow_rate_lu(*fluid);
-  run.plasma_flow_rate_um3_per_s =
-      plasma_flow_lu * dx_um * dx_um * dx_um / physics.units.dt_s();
+  run.plasma_flow_rate_um3_per_s = plasma_flow_lu * dx_um * dx_um * dx_um / physics.units.dt_s();
 
   coupling::CoupledSimulation simulation(std::move(fluid), physics.units, physics.coupling,
                                          tube.grid_um.origin_um);
@@ -317,10 +402,10 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
   // vertex.
   std::vector<WallRepulsion> repulsions;
   for (const auto& morphology : morphologies) {
-    repulsions.push_back({settings.wall_repulsion_pN_per_um2 *
-                              mesh::surface_area_um2(morphology.mesh) /
-                              static_cast<double>(morphology.mesh.vertex_count()),
-                          settings.wall_repulsion_range_um});
+    repulsions.push_back(
+        {settings.wall_repulsion_pN_per_um2 * mesh::surface_area_um2(morphology.mesh) /
+             static_cast<double>(morphology.mesh.vertex_count()),
+         settings.wall_repulsion_range_um});
   }
   const std::vector<std::size_t> kinds(cell_morphologies.begin(), cell_morphologies.end());
   simulation.add_external_force([repulsions, kinds, radius_um](std::size_t c,
@@ -331,10 +416,14 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
         forces_pN);
   });
   simulation.set_cell_contact(settings.contact, "suspension.contact_force_pN");
-  simulation.add_observer({"suspension_samples",
-                           interval_steps(physics.units, settings.sample_interval_s),
-                           SuspensionRecorder(run, settings, cell_volumes_um3, plasma_flow_lu)});
+  const std::size_t sample_steps = interval_steps(physics.units, settings.sample_interval_s);
+  std::vector<std::size_t> sampled_at_steps;
+  simulation.add_observer(
+      {"suspension_samples", sample_steps,
+       SuspensionRecorder(run, sampled_at_steps, settings, cell_volumes_um3, plasma_flow_lu)});
   simulation.add_stop_criterion(coupling::stop_at_time(settings.duration_s));
+  simulation.add_stop_criterion(std::make_unique<SuspensionRecord>(
+      run, sampled_at_steps, sample_steps, cell_morphologies.size()));
   if (configure) configure(simulation);
   const auto record_end = [&run, &simulation] {
     run.steps = simulation.time_step();

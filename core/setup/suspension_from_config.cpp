@@ -115,8 +115,7 @@ SuspensionCompression suspension_compression_from(const config::Config& config) 
       velocity * config.number("suspension.tube_diameter_um") * 1e-6 / viscosity;
   compression.simulated_reynolds_number = compression.physical_reynolds_number;
   const double limit = config.number("suspension.max_reynolds_number");
-  compression.factor =
-      low_reynolds_compression_factor(compression.physical_reynolds_number, limit);
+  compression.factor = low_reynolds_compression_factor(compression.physical_reynolds_number, limit);
   if (compression.factor == 1.0) return compression;
   compression.simulated_reynolds_number = limit;
   return compression;
@@ -152,6 +151,11 @@ void to_physical_units(cases::SuspensionRun& run, double s) {
   run.plasma_flow_rate_um3_per_s /= s;
   run.pseudo_shear_rate_per_s /= s;
   // G = 8 mu U / R^2 with mu / s and U s: unchanged.
+  const std::string note =
+      " (times in this message are simulated ones: physical = " + format_number(s) +
+      " x simulated, suspension.max_reynolds_number)";
+  if (!run.stop_reason.empty()) run.stop_reason += note;
+  if (!run.failure.empty()) run.failure += note;
 }
 
 }  // namespace rbcsim::setup

@@ -1,13 +1,16 @@
 // `rbcsim capillary --geometry tube --hematocrit H`, end to end on a coarse set-up (two
 // 162-vertex cells on dx = 1 um): the run directory (result.json against the schema, the two time
 // series, one ParaView series for all cells with their ids), cells that touch in the flow without
-// piercing each other (642-vertex cells), and bad input.
+// piercing each other (642-vertex cells), a resumed run that rewrites a straight one's results,
+// and bad input.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "io/csv_table.hpp"
 #include "support/run_rbcsim.hpp"
@@ -123,6 +126,45 @@ TEST(CliSuspension, CellsOvertakingEachOtherInTubeFlowNeverInterpenetrate) {
   EXPECT_EQ(*std::max_element(pierced.begin(), pierced.end()), 0.0);
 }
 
+std::vector<std::string> rows_of(const fs::path& file) {
+  std::vector<std::string> rows;
+  std::istringstream text(read_text(file));
+  for (std::string row; std::getline(text, row);) rows.push_back(row);
+  return rows;
+}
+
+// --checkpoint-every leaves the run's last checkpoint in its directory; --resume of that directory
+// runs the steps after it again and must rewrite the same "suspension" object of result.json, the
+// same two time series (the samples before the checkpoint come from it) and snapshot collections.
+TEST(CliSuspension, ResumeRewritesTheStraightRunsResults) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const std::string settings =
+      std::string(kCoarseTube) + "--hematocrit 0.2 --mix discocyte=0.5,stomatocyte-II=0.5 --quiet ";
+  const auto straight = run_rbcsim(
+      settings + "--checkpoint-every 50 --output '" + run_dir.string() + "'", scratch.path());
+  ASSERT_EQ(straight.exit_code, 0) << straight.err;
+  ASSERT_TRUE(fs::exists(run_dir / "checkpoint.bin"));
+  const auto straight_result = nlohmann::json::parse(read_text(run_dir / "result.json"));
+  const auto straight_flow = rows_of(run_dir / "suspension_timeseries.csv");
+  const auto straight_cells = rows_of(run_dir / "cells_timeseries.csv");
+  const auto straight_membranes = rows_of(run_dir / "cells.pvd");
+  const auto straight_fluid = rows_of(run_dir / "fluid.pvd");
+  ASSERT_GT(straight_result["suspension"]["steps"].get<double>(), 50.0);
+  for (const char* name : {"result.json", "suspension_timeseries.csv", "cells_timeseries.csv"}) {
+    fs::remove(run_dir / name);
+  }
+
+  const auto resumed = run_rbcsim(settings + "--resume '" + run_dir.string() + "'", scratch.path());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  const auto resumed_result = nlohmann::json::parse(read_text(run_dir / "result.json"));
+  EXPECT_EQ(resumed_result["suspension"], straight_result["suspension"]);
+  EXPECT_EQ(rows_of(run_dir / "suspension_timeseries.csv"), straight_flow);
+  EXPECT_EQ(rows_of(run_dir / "cells_timeseries.csv"), straight_cells);
+  EXPECT_EQ(rows_of(run_dir / "cells.pvd"), straight_membranes);
+  EXPECT_EQ(rows_of(run_dir / "fluid.pvd"), straight_fluid);
+}
+
 TEST(CliSuspension, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
   const ScratchDirectory scratch;
   const auto out = (scratch.path() / "run").string();
@@ -134,7 +176,6 @@ TEST(CliSuspension, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
            {"--hematocrit 0.2 --set suspension.contact_range_um=0.5",
             "suspension.contact_range_um"},
            {"--hematocrit 0.2 --orientations 3", "capillary.orientations"},
-           {"--hematocrit 0.2 --checkpoint-every 100", "--checkpoint-every"},
        }) {
     const auto run = run_rbcsim(std::string(kCoarseTube) + arguments + " --output '" + out + "'",
                                 scratch.path());
