@@ -38,7 +38,8 @@ std::vector<std::size_t> cells_of(const std::vector<cases::SuspensionMorphology>
   return cells;
 }
 
-void write_tables(const std::filesystem::path& directory, const cases::SuspensionRun& run) {
+void write_tables(const std::filesystem::path& directory, const cases::SuspensionRun& run,
+                  const cases::SuspensionSettings& settings) {
   std::vector<std::vector<double>> rows;
   for (const auto& sample : run.samples) rows.push_back(cases::suspension_table_row(sample));
   io::write_csv_file(directory / "suspension_timeseries.csv", cases::suspension_table_columns(),
@@ -48,6 +49,13 @@ void write_tables(const std::filesystem::path& directory, const cases::Suspensio
     rows.push_back(cases::suspension_cell_table_row(sample, run.cell_morphologies));
   }
   io::write_csv_file(directory / "cells_timeseries.csv", cases::suspension_cell_table_columns(),
+                     rows);
+  rows.clear();
+  for (const auto& sample : run.samples) {
+    for (auto& row : cases::hematocrit_profile_rows(sample, settings))
+      rows.push_back(std::move(row));
+  }
+  io::write_csv_file(directory / "hematocrit_profile.csv", cases::hematocrit_profile_columns(),
                      rows);
 }
 
@@ -147,7 +155,7 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
   progress.done();
   if (!started) directory.start(config, described);
   setup::to_physical_units(run, compression.factor);
-  write_tables(directory.path(), run);
+  write_tables(directory.path(), run, settings);
 
   auto result = run.interrupted ? directory.result_head_with_status("interrupted")
                                 : directory.result_head(run.ok());
@@ -166,11 +174,10 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
                         {"discharge_hematocrit", run.averages.discharge_hematocrit},
                         {"tube_hematocrit", run.averages.tube_hematocrit},
                         {"cell_free_layer_um", run.averages.cell_free_layer_um}};
-  result["files"] = {{"config", "config.json"},
-                     {"timeseries", "suspension_timeseries.csv"},
-                     {"cells", "cells_timeseries.csv"},
-                     {"membrane", "cells.pvd"},
-                     {"fluid", "fluid.pvd"}};
+  result["files"] = {
+      {"config", "config.json"},         {"timeseries", "suspension_timeseries.csv"},
+      {"cells", "cells_timeseries.csv"}, {"hematocrit_profile", "hematocrit_profile.csv"},
+      {"membrane", "cells.pvd"},         {"fluid", "fluid.pvd"}};
   directory.write_json("result.json", result);
   if (common.json) {
     std::cout << result.dump(2) << '\n';

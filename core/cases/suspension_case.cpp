@@ -11,6 +11,7 @@
 #include "cases/capillary_observables.hpp"
 #include "cases/release_orientations.hpp"
 #include "cases/suspension_packing.hpp"
+#include "cases/suspension_profile.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/state_archive.hpp"
@@ -130,6 +131,22 @@ std::pair<double, double> cell_free_layer_um(const coupling::CoupledSimulation& 
           static_cast<double>(populated) / static_cast<double>(outermost.size())};
 }
 
+// The cells' volume fraction in rings about the axis.
+std::vector<double> hematocrit_profile(const coupling::CoupledSimulation& simulation,
+                                       const SuspensionSettings& settings) {
+  std::vector<std::vector<Vec3>> positions_um;
+  std::vector<std::span<const mesh::Triangle>> triangles;
+  for (std::size_t c = 0; c < simulation.cells().size(); ++c) {
+    positions_um.push_back(simulation.positions_now_um(c));
+    triangles.push_back(simulation.cell(c).model().triangles());
+  }
+  RadialProfileGrid grid;
+  grid.radius_um = 0.5 * settings.tube_diameter_um;
+  grid.length_um = settings.tube_length_um;
+  grid.rings = settings.profile_rings;
+  return radial_volume_fraction(positions_um, triangles, grid);
+}
+
 // How many cells have a vertex inside another cell, across the tube's periodic length.
 std::size_t pierced_cell_count(const coupling::CoupledSimulation& simulation, double length_um) {
   std::vector<std::vector<Vec3>> positions_um;
@@ -189,6 +206,7 @@ class SuspensionRecorder {
     sample.close_contact_pairs = simulation.contact_statistics().close_pairs;
     sample.pierced_cells = pierced_cell_count(simulation, settings_.tube_length_um);
     if (sample.pierced_cells > 0) ++run_.samples_with_pierced_cells;
+    sample.volume_fraction_by_ring = hematocrit_profile(simulation, settings_);
     run_.samples.push_back(sample);
     sample_steps_.push_back(simulation.time_step());
   }
@@ -212,18 +230,19 @@ constexpr std::size_t kSuspensionCellSampleValues = 8;
 class SuspensionRecord final : public coupling::StopCriterion {
  public:
   SuspensionRecord(SuspensionRun& run, std::vector<std::size_t>& sample_steps,
-                   std::size_t interval_steps, std::size_t cell_count)
+                   std::size_t interval_steps, std::size_t cell_count, std::size_t rings)
       : run_(run),
         sample_steps_(sample_steps),
         interval_steps_(interval_steps),
-        cell_count_(cell_count) {}
+        cell_count_(cell_count),
+        rings_(rings) {}
 
   std::optional<std::string> check(const coupling::CoupledSimulation& /*simulation*/) override {
     return std::nullopt;
   }
 
   void save_state(StateArchive& archive, const std::string& prefix) const override {
-    std::vector<double> samples, cells;
+    std::vector<double> samples, cells, profiles;
     for (std::size_t i = 0; i < run_.samples.size(); ++i) {
       if (sample_steps_[i] % interval_steps_ != 0) continue;
       const auto& s = run_.samples[i];
@@ -233,6 +252,8 @@ class SuspensionRecord final : public coupling::StopCriterion {
            s.relative_apparent_viscosity, s.tube_hematocrit, s.discharge_hematocrit,
            s.cell_free_layer_um, s.populated_bin_fraction, static_cast<double>(s.contact_pairs),
            static_cast<double>(s.close_contact_pairs), static_cast<double>(s.pierced_cells)});
+      profiles.insert(profiles.end(), s.volume_fraction_by_ring.begin(),
+                      s.volume_fraction_by_ring.end());
       for (std::size_t c = 0; c < cell_count_; ++c) {
         const auto& cell = run_.cell_samples[i * cell_count_ + c];
         cells.insert(cells.end(),
@@ -243,6 +264,7 @@ class SuspensionRecord final : public coupling::StopCriterion {
     }
     archive.put(prefix + "samples", std::move(samples));
     archive.put(prefix + "cell_samples", std::move(cells));
+    archive.put(prefix + "profiles", std::move(profiles));
   }
 
   void restore_state(StateArchive& archive, const std::string& prefix) override {
@@ -253,6 +275,7 @@ class SuspensionRecord final : public coupling::StopCriterion {
     const std::size_t count = samples.size() / kSuspensionSampleValues;
     const auto cells =
         archive.take(prefix + "cell_samples", count * cell_count_ * kSuspensionCellSampleValues);
+    const auto profiles = archive.take(prefix + "profiles", count * rings_);
     run_.samples.clear();
     run_.cell_samples.clear();
     sample_steps_.clear();
@@ -260,9 +283,11 @@ class SuspensionRecord final : public coupling::StopCriterion {
     for (std::size_t i = 0; i < count; ++i) {
       const auto* v = samples.data() + i * kSuspensionSampleValues;
       sample_steps_.push_back(static_cast<std::size_t>(v[0]));
-      run_.samples.push_back({v[1], v[2], v[3], v[4], v[5], v[6], v[7],
-                              static_cast<std::size_t>(v[8]), static_cast<std::size_t>(v[9]),
-                              static_cast<std::size_t>(v[10])});
+      const auto ring_values = profiles.begin() + static_cast<std::ptrdiff_t>(i * rings_);
+      run_.samples.push_back(
+          {v[1], v[2], v[3], v[4], v[5], v[6], v[7], static_cast<std::size_t>(v[8]),
+           static_cast<std::size_t>(v[9]), static_cast<std::size_t>(v[10]),
+           std::vector<double>(ring_values, ring_values + static_cast<std::ptrdiff_t>(rings_))});
       if (run_.samples.back().pierced_cells > 0) ++run_.samples_with_pierced_cells;
     }
     for (std::size_t k = 0; k < count * cell_count_; ++k) {
@@ -277,6 +302,7 @@ class SuspensionRecord final : public coupling::StopCriterion {
   std::vector<std::size_t>& sample_steps_;
   std::size_t interval_steps_;
   std::size_t cell_count_;
+  std::size_t rings_;
 };
 
 SuspensionAverages averages_of(const std::vector<SuspensionSample>& samples, double end_s,
@@ -294,6 +320,14 @@ SuspensionAverages averages_of(const std::vector<SuspensionSample>& samples, dou
   }
   if (averages.samples == 0) return averages;
   const double n = static_cast<double>(averages.samples);
+  for (const auto& sample : samples) {
+    if (sample.time_s < from_s || sample.time_s == 0.0) continue;
+    auto& profile = averages.volume_fraction_by_ring;
+    profile.resize(sample.volume_fraction_by_ring.size(), 0.0);
+    for (std::size_t ring = 0; ring < profile.size(); ++ring) {
+      profile[ring] += sample.volume_fraction_by_ring[ring] / n;
+    }
+  }
   averages.tube_hematocrit /= n;
   averages.discharge_hematocrit /= n;
   averages.cell_free_layer_um /= n;
@@ -423,7 +457,7 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
        SuspensionRecorder(run, sampled_at_steps, settings, cell_volumes_um3, plasma_flow_lu)});
   simulation.add_stop_criterion(coupling::stop_at_time(settings.duration_s));
   simulation.add_stop_criterion(std::make_unique<SuspensionRecord>(
-      run, sampled_at_steps, sample_steps, cell_morphologies.size()));
+      run, sampled_at_steps, sample_steps, cell_morphologies.size(), settings.profile_rings));
   if (configure) configure(simulation);
   const auto record_end = [&run, &simulation] {
     run.steps = simulation.time_step();

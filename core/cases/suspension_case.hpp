@@ -14,7 +14,8 @@
 // pressure gradient drives both); tube hematocrit (cell volumes over the lumen) and discharge
 // hematocrit sum(V_i u_i) / (Q L) with u_i a cell's mean vertex velocity along the axis; the
 // cell-free layer R - mean over (x, angle) bins of the outermost vertex's radius (bins holding no
-// vertex left out). Each cell's centroid, radial position, axial velocity and deformation index.
+// vertex left out); the hematocrit profile (the cells' volume fraction in rings about the axis,
+// suspension_profile.hpp). Each cell's centroid, radial position, axial velocity and deformation index.
 // The averages are over the samples of the last `averaging_fraction` of the run.
 #pragma once
 
@@ -41,6 +42,7 @@ struct SuspensionSettings {
   double duration_s = 0.0;
   double sample_interval_s = 0.0;
   double averaging_fraction = 0.5;  // of the run, at its end
+  std::size_t profile_rings = 10;    // of the hematocrit profile (suspension_profile.hpp)
   double wall_repulsion_pN_per_um2 = 20.0;
   double wall_repulsion_range_um = 0.5;
   contact::ContactParameters contact{5.0, 0.75};
@@ -76,6 +78,9 @@ struct SuspensionSample {
   // Cells with a vertex inside another cell (find_pierced_cells): surfaces that passed through
   // each other, which the contact is there to prevent.
   std::size_t pierced_cells = 0;
+  // The volume fraction of cells in each of SuspensionSettings::profile_rings rings of equal
+  // width about the axis, the first innermost (suspension_profile.hpp).
+  std::vector<double> volume_fraction_by_ring;
 };
 
 struct SuspensionCellSample {
@@ -94,6 +99,7 @@ struct SuspensionAverages {
   double tube_hematocrit = 0.0;
   double discharge_hematocrit = 0.0;
   double cell_free_layer_um = 0.0;
+  std::vector<double> volume_fraction_by_ring;  // the hematocrit profile
 };
 
 struct SuspensionRun {

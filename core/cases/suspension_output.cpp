@@ -29,8 +29,8 @@ std::vector<double> suspension_table_row(const SuspensionSample& sample) {
 }
 
 std::vector<std::string> suspension_cell_table_columns() {
-  return {"time_s",        "cell_id",       "morphology_index",   "centroid_x_um",
-          "centroid_y_um", "centroid_z_um", "radial_position_um", "velocity_x_m_per_s",
+  return {"time_s",           "cell_id",       "morphology_index",   "centroid_x_um",
+          "centroid_y_um",    "centroid_z_um", "radial_position_um", "velocity_x_m_per_s",
           "deformation_index"};
 }
 
@@ -45,6 +45,37 @@ std::vector<double> suspension_cell_table_row(const SuspensionCellSample& sample
           sample.radial_position_um,
           sample.velocity_x_m_per_s,
           sample.deformation_index};
+}
+
+std::vector<std::string> hematocrit_profile_columns() {
+  return {"time_s", "ring", "inner_radius_um", "outer_radius_um", "volume_fraction"};
+}
+
+std::vector<std::vector<double>> hematocrit_profile_rows(const SuspensionSample& sample,
+                                                         const SuspensionSettings& settings) {
+  const auto& profile = sample.volume_fraction_by_ring;
+  const double width_um = 0.5 * settings.tube_diameter_um / static_cast<double>(profile.size());
+  std::vector<std::vector<double>> rows;
+  for (std::size_t ring = 0; ring < profile.size(); ++ring) {
+    const double inner_um = width_um * static_cast<double>(ring);
+    rows.push_back(
+        {sample.time_s, static_cast<double>(ring), inner_um, inner_um + width_um, profile[ring]});
+  }
+  return rows;
+}
+
+nlohmann::ordered_json hematocrit_profile_section(const SuspensionSettings& settings,
+                                                  std::span<const double> volume_fraction) {
+  const double width_um =
+      0.5 * settings.tube_diameter_um / static_cast<double>(settings.profile_rings);
+  std::vector<double> inner_um, outer_um;
+  for (std::size_t ring = 0; ring < settings.profile_rings; ++ring) {
+    inner_um.push_back(width_um * static_cast<double>(ring));
+    outer_um.push_back(width_um * static_cast<double>(ring + 1));
+  }
+  return {{"ring_inner_radius_um", inner_um},
+          {"ring_outer_radius_um", outer_um},
+          {"volume_fraction", std::vector<double>(volume_fraction.begin(), volume_fraction.end())}};
 }
 
 nlohmann::ordered_json suspension_result_section(std::span<const std::string> morphology_names,
@@ -79,6 +110,7 @@ nlohmann::ordered_json suspension_result_section(std::span<const std::string> mo
       {"tube_to_discharge_hematocrit",
        a.discharge_hematocrit > 0.0 ? a.tube_hematocrit / a.discharge_hematocrit : 0.0},
       {"cell_free_layer_um", a.cell_free_layer_um},
+      {"hematocrit_profile", hematocrit_profile_section(settings, a.volume_fraction_by_ring)},
       {"contact_force_pN", settings.contact.force_at_contact_pN},
       {"contact_range_um", settings.contact.range_um},
       {"close_contact_steps", run.close_contact_steps},

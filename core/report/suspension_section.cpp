@@ -408,6 +408,41 @@ std::vector<nlohmann::json> add_radial_plot(const RunList& runs,
   return summaries;
 }
 
+// The hematocrit profile (result.json "hematocrit_profile": the cells' volume fraction in rings
+// about the axis, averaged over the run's window) of every run that has one, as one plot, and per
+// run in the summary: {"r_over_R": ring midpoints, "volume_fraction": [...]} (null without one).
+std::vector<nlohmann::json> add_profile_plot(const RunList& runs,
+                                             const std::vector<std::string>& labels,
+                                             const std::vector<std::string>& colours,
+                                             Section& section) {
+  std::vector<nlohmann::json> summaries(runs.size(), nullptr);
+  svg::LinePlot plot{
+      "Hematocrit across the tube", "radial position r / R", "volume fraction of cells", {}};
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const auto profile = runs[i]->section().find("hematocrit_profile");
+    if (!profile) continue;
+    const auto inner = profile->at("ring_inner_radius_um");
+    const auto outer = profile->at("ring_outer_radius_um");
+    const auto fraction = profile->at("volume_fraction");
+    const double radius_um = 0.5 * runs[i]->section().at("tube_diameter_um").number();
+    std::vector<svg::PlotPoint> points;
+    for (std::size_t ring = 0; ring < fraction.array_size(); ++ring) {
+      const double middle_um = 0.5 * (inner.at(ring).number() + outer.at(ring).number());
+      points.push_back({middle_um / radius_um, fraction.at(ring).number()});
+      summaries[i]["r_over_R"].push_back(points.back().x);
+      summaries[i]["volume_fraction"].push_back(points.back().y);
+    }
+    plot.series.push_back({labels[i], points, colours[i], svg::Marker::circle, true, false});
+  }
+  if (plot.series.empty()) return summaries;
+  section.blocks.emplace_back(
+      Figure{svg::render_line_plot(plot),
+             "The cells' volume fraction in rings of equal width about the axis, averaged over "
+             "each run's window (hematocrit_profile.csv has every sample): the core the cells "
+             "crowd into, and the cell-free layer as the fall to 0 at the wall."});
+  return summaries;
+}
+
 }  // namespace
 }  // namespace suspension_parts
 
@@ -456,6 +491,7 @@ Section build_suspension_section(const RunList& all_runs) {
         svg::render_line_plot(fahraeus),
         "Each run's average against the fit attributed to Pries, Secomb, Gaehtgens, Gross (1990); "
         "other codes use constants up to 0.015 apart for D 10-100 um."});
+    const auto profiles = add_profile_plot(runs, labels, colours, section);
     const auto centres = add_radial_plot(runs, labels, colours, section);
     section.blocks.emplace_back(results_table(runs, labels));
     mixtures = mixture_comparisons(runs, labels, section);
@@ -463,6 +499,7 @@ Section build_suspension_section(const RunList& all_runs) {
       auto summary = run_summary(*runs[i]);
       summary["label"] = labels[i];
       summary["centre_density"] = centres[i];
+      summary["hematocrit_profile"] = profiles[i];
       run_summaries.push_back(std::move(summary));
       for (const auto& comparison : comparisons_of(*runs[i], labels[i])) {
         comparisons.push_back(to_json(comparison));

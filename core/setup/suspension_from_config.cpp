@@ -79,6 +79,7 @@ cases::SuspensionSettings suspension_settings_from(const config::Config& config)
   settings.duration_s = config.number("suspension.duration_s");
   settings.sample_interval_s = config.number("suspension.sample_interval_s");
   settings.averaging_fraction = config.number("suspension.averaging_fraction");
+  settings.profile_rings = static_cast<std::size_t>(config.integer("suspension.profile_rings"));
   settings.wall_repulsion_pN_per_um2 = config.number("suspension.wall_repulsion_pN_per_um2");
   settings.wall_repulsion_range_um = config.number("suspension.wall_repulsion_range_um");
   settings.contact = {config.number("suspension.contact_force_pN"),

@@ -62,12 +62,29 @@ TEST(CliSuspension, WritesTheRunDirectoryOfAMixedSuspension) {
       suspension["plasma_flow_rate_um3_per_s"].get<double>() / (3.14159265358979 * 25.0 * 2000.0),
       1.0, 0.02);
 
+  // The hematocrit profile (10 rings of 0.5 um) integrates to the cells' volume over the lumen's:
+  // the tube hematocrit, to the cells' change of volume in the flow (the volume term holds it
+  // within 1 %) and the profile's lines (0.1 um squares, 1 % on these cells).
+  const auto& profile = suspension["hematocrit_profile"];
+  ASSERT_EQ(profile["volume_fraction"].size(), 10u);
+  EXPECT_EQ(profile["ring_outer_radius_um"].back(), 5.0);
+  double integrated = 0.0;
+  for (std::size_t ring = 0; ring < 10; ++ring) {
+    const double inner = profile["ring_inner_radius_um"][ring].get<double>() / 5.0;
+    const double outer = profile["ring_outer_radius_um"][ring].get<double>() / 5.0;
+    integrated += profile["volume_fraction"][ring].get<double>() * (outer * outer - inner * inner);
+  }
+  EXPECT_NEAR(integrated, suspension["tube_hematocrit"].get<double>(),
+              0.02 * suspension["tube_hematocrit"].get<double>());
+
   const auto flow = rbcsim::io::read_csv_file(run_dir / "suspension_timeseries.csv");
   const auto time_s = flow.numbers("time_s");
   ASSERT_GE(time_s.size(), 5u);
   EXPECT_EQ(time_s.front(), 0.0);
   const auto cells = rbcsim::io::read_csv_file(run_dir / "cells_timeseries.csv");
   EXPECT_EQ(cells.numbers("cell_id").size(), 2 * time_s.size());
+  const auto rings = rbcsim::io::read_csv_file(run_dir / "hematocrit_profile.csv");
+  EXPECT_EQ(rings.numbers("volume_fraction").size(), 10 * time_s.size());
   const auto pvd = read_text(run_dir / "cells.pvd");
   EXPECT_NE(pvd.find("<DataSet"), std::string::npos);
   EXPECT_FALSE(fs::exists(run_dir / "cell0.pvd"));
@@ -148,10 +165,12 @@ TEST(CliSuspension, ResumeRewritesTheStraightRunsResults) {
   const auto straight_result = nlohmann::json::parse(read_text(run_dir / "result.json"));
   const auto straight_flow = rows_of(run_dir / "suspension_timeseries.csv");
   const auto straight_cells = rows_of(run_dir / "cells_timeseries.csv");
+  const auto straight_profile = rows_of(run_dir / "hematocrit_profile.csv");
   const auto straight_membranes = rows_of(run_dir / "cells.pvd");
   const auto straight_fluid = rows_of(run_dir / "fluid.pvd");
   ASSERT_GT(straight_result["suspension"]["steps"].get<double>(), 50.0);
-  for (const char* name : {"result.json", "suspension_timeseries.csv", "cells_timeseries.csv"}) {
+  for (const char* name : {"result.json", "suspension_timeseries.csv", "cells_timeseries.csv",
+                           "hematocrit_profile.csv"}) {
     fs::remove(run_dir / name);
   }
 
@@ -161,6 +180,7 @@ TEST(CliSuspension, ResumeRewritesTheStraightRunsResults) {
   EXPECT_EQ(resumed_result["suspension"], straight_result["suspension"]);
   EXPECT_EQ(rows_of(run_dir / "suspension_timeseries.csv"), straight_flow);
   EXPECT_EQ(rows_of(run_dir / "cells_timeseries.csv"), straight_cells);
+  EXPECT_EQ(rows_of(run_dir / "hematocrit_profile.csv"), straight_profile);
   EXPECT_EQ(rows_of(run_dir / "cells.pvd"), straight_membranes);
   EXPECT_EQ(rows_of(run_dir / "fluid.pvd"), straight_fluid);
 }

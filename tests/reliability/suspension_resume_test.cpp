@@ -79,6 +79,7 @@ void expect_same(const SuspensionSample& resumed, const SuspensionSample& straig
   EXPECT_EQ(resumed.contact_pairs, straight.contact_pairs);
   EXPECT_EQ(resumed.close_contact_pairs, straight.close_contact_pairs);
   EXPECT_EQ(resumed.pierced_cells, straight.pierced_cells);
+  EXPECT_EQ(resumed.volume_fraction_by_ring, straight.volume_fraction_by_ring);
 }
 
 void expect_same(const SuspensionCellSample& resumed, const SuspensionCellSample& straight) {

@@ -110,6 +110,32 @@ TEST(SuspensionReport, CentreDistributionIsRelativeToAnEvenSpread) {
                        "stomatocyte-II"));
 }
 
+// The hematocrit profile of result.json is drawn against the rings' midpoints over R; a run
+// written before the profile existed has none and no curve.
+TEST(SuspensionReport, HematocritProfileIsDrawnAgainstTheRingMidpoints) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto profiled = suspension_run(10.0, 0.2, 0.25, 1.2, {{"discocyte", 5, 2.0}});
+  profiled.section["hematocrit_profile"] = {{"ring_inner_radius_um", {0.0, 2.5}},
+                                            {"ring_outer_radius_um", {2.5, 5.0}},
+                                            {"volume_fraction", {0.3, 0.1}}};
+  const auto older = suspension_run(20.0, 0.2, 0.25, 1.2, {{"discocyte", 5, 2.0}});
+  const auto documents =
+      build_report(read_run_directories({write_run(scratch.path() / "profiled", profiled),
+                                         write_run(scratch.path() / "older", older)}));
+  const auto& runs = documents.summary.at("suspension").at("runs");
+  ASSERT_EQ(runs.size(), 2u);
+  for (const auto& run : runs) {
+    const auto& profile = run.at("hematocrit_profile");
+    if (run.at("label").get<std::string>().starts_with("D 20 um")) {
+      EXPECT_TRUE(profile.is_null());
+      continue;
+    }
+    EXPECT_EQ(profile.at("r_over_R"), (nlohmann::json{0.25, 0.75}));
+    EXPECT_EQ(profile.at("volume_fraction"), (nlohmann::json{0.3, 0.1}));
+  }
+  EXPECT_NE(documents.html.find("Hematocrit across the tube"), std::string::npos);
+}
+
 // A run in which cells passed through each other keeps its numbers but gets no verdict.
 TEST(SuspensionReport, PiercedCellsWithholdTheVerdict) {
   rbcsim::testing::ScratchDirectory scratch;

@@ -45,6 +45,13 @@ void add_suspension_options(OptionTable& table) {
       .above(0.0)
       .at_most(1.0);
   table
+      .add_integer("suspension.profile_rings", "",
+                   static_cast<int>(kSuspensionDefaults.profile_rings),
+                   "Rings of equal width about the tube's axis over which the hematocrit profile "
+                   "(the cells' volume fraction) is measured.")
+      .at_least(1)
+      .at_most(25);
+  table
       .add_number("suspension.contact_force_pN", "pN",
                   kSuspensionDefaults.contact.force_at_contact_pN,
                   "Cell-cell repulsion between two vertices of different cells at zero distance, "
