@@ -38,6 +38,18 @@ std::vector<std::size_t> cells_of(const std::vector<cases::SuspensionMorphology>
   return cells;
 }
 
+// The morphology of each cell placed by hand, as an index into the mix's names (which list the
+// placed cells' morphologies in order of appearance).
+std::vector<std::size_t> placed_cells_of(const setup::SuspensionMix& mix,
+                                         const std::vector<config::CellPlacement>& placed) {
+  std::vector<std::size_t> cells;
+  for (const auto& cell : placed) {
+    cells.push_back(static_cast<std::size_t>(
+        std::find(mix.names.begin(), mix.names.end(), cell.morphology) - mix.names.begin()));
+  }
+  return cells;
+}
+
 void write_tables(const std::filesystem::path& directory, const cases::SuspensionRun& run,
                   const cases::SuspensionSettings& settings) {
   std::vector<std::vector<double>> rows;
@@ -92,12 +104,17 @@ void print_summary(const nlohmann::ordered_json& result, const cases::Suspension
 bool wants_suspension(const config::Config& config) {
   const bool tube = config.string("capillary.geometry") == "tube";
   const bool hematocrit = config.number("suspension.hematocrit") > 0.0;
-  if (tube && !hematocrit) {
-    throw InputError("suspension.hematocrit",
-                     "the tube holds a suspension: give --hematocrit (> 0)");
+  const bool placed = !config.cell_list("suspension.cells").empty();
+  if (hematocrit && placed) {
+    throw InputError("suspension.cells",
+                     "cells placed by hand and --hematocrit exclude each other: give one");
   }
-  if (hematocrit && !tube) {
+  if (tube && !hematocrit && !placed) {
     throw InputError("suspension.hematocrit",
+                     "the tube holds a suspension: give --hematocrit (> 0) or suspension.cells");
+  }
+  if ((hematocrit || placed) && !tube) {
+    throw InputError(hematocrit ? "suspension.hematocrit" : "suspension.cells",
                      "suspensions run in the straight periodic tube only: add --geometry tube");
   }
   if (tube && !config.string("capillary.wall_file").empty()) {
@@ -119,7 +136,10 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
   const auto simulated = setup::compressed_suspension_config(config, compression.factor);
   const auto settings = setup::suspension_settings_from(simulated);
   const auto morphologies = setup::suspension_morphologies_from(request, mix, compression.factor);
-  const auto cells = cells_of(morphologies, mix, settings, config.number("suspension.hematocrit"));
+  const auto cells =
+      settings.placed_cells.empty()
+          ? cells_of(morphologies, mix, settings, config.number("suspension.hematocrit"))
+          : placed_cells_of(mix, config.cell_list("suspension.cells"));
   std::vector<std::int32_t> kinds(cells.begin(), cells.end());
 
   const RunDirectory directory("capillary", common, config);

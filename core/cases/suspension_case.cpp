@@ -383,8 +383,12 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
   const double radius_um = 0.5 * settings.tube_diameter_um;
   std::vector<mesh::TriangleMesh> meshes;
   for (const auto& morphology : morphologies) meshes.push_back(morphology.mesh);
-  const Packing packing = pack_cells_in_tube(
-      meshes, cell_morphologies, {radius_um, settings.tube_length_um}, settings.packing);
+  const PackingTube packing_tube{radius_um, settings.tube_length_um};
+  const Packing packing =
+      settings.placed_cells.empty()
+          ? pack_cells_in_tube(meshes, cell_morphologies, packing_tube, settings.packing)
+          : place_cells_in_tube(meshes, cell_morphologies, settings.placed_cells, packing_tube,
+                                settings.packing);
 
   SuspensionRun run;
   run.cell_morphologies.assign(cell_morphologies.begin(), cell_morphologies.end());

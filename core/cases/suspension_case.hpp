@@ -15,8 +15,8 @@
 // hematocrit sum(V_i u_i) / (Q L) with u_i a cell's mean vertex velocity along the axis; the
 // cell-free layer R - mean over (x, angle) bins of the outermost vertex's radius (bins holding no
 // vertex left out); the hematocrit profile (the cells' volume fraction in rings about the axis,
-// suspension_profile.hpp). Each cell's centroid, radial position, axial velocity and deformation index.
-// The averages are over the samples of the last `averaging_fraction` of the run.
+// suspension_profile.hpp). Each cell's centroid, radial position, axial velocity and deformation
+// index. The averages are over the samples of the last `averaging_fraction` of the run.
 #pragma once
 
 #include <cstddef>
@@ -42,11 +42,13 @@ struct SuspensionSettings {
   double duration_s = 0.0;
   double sample_interval_s = 0.0;
   double averaging_fraction = 0.5;  // of the run, at its end
-  std::size_t profile_rings = 10;    // of the hematocrit profile (suspension_profile.hpp)
+  std::size_t profile_rings = 10;   // of the hematocrit profile (suspension_profile.hpp)
   double wall_repulsion_pN_per_um2 = 20.0;
   double wall_repulsion_range_um = 0.5;
   contact::ContactParameters contact{5.0, 0.75};
   PackingSettings packing;
+  // Cells placed by hand (suspension.cells): one pose per cell, instead of the packing.
+  std::vector<CellPose> placed_cells;
   double fluid_tolerance = 1e-6;
   std::size_t fluid_max_steps = 200000;
 };
@@ -73,7 +75,7 @@ struct SuspensionSample {
   double discharge_hematocrit = 0.0;
   double cell_free_layer_um = 0.0;
   double populated_bin_fraction = 0.0;  // of the (x, angle) bins the layer is measured over
-  std::size_t contact_pairs = 0;  // ordered vertex pairs of different cells within the range
+  std::size_t contact_pairs = 0;        // ordered vertex pairs of different cells within the range
   std::size_t close_contact_pairs = 0;
   // Cells with a vertex inside another cell (find_pierced_cells): surfaces that passed through
   // each other, which the contact is there to prevent.

@@ -3,8 +3,11 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 #include "common/errors.hpp"
@@ -67,23 +70,80 @@ Vec3 random_place(std::mt19937& generator, const PackingTube& tube, double clear
   return {x, r * std::cos(angle), r * std::sin(angle)};
 }
 
+Eigen::Quaterniond orientation_of(const CellPose& pose) {
+  const double spin_rad = pose.spin_deg * std::numbers::pi / 180.0;
+  return (Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), pose.axis.normalized()) *
+          Eigen::Quaterniond(Eigen::AngleAxisd(spin_rad, Vec3::UnitZ())))
+      .normalized();
+}
+
 class Packer {
  public:
+  // Cells at seeded random places and orientations (`poses` empty) or at the poses given.
   Packer(std::span<const mesh::TriangleMesh> meshes, std::span<const std::size_t> cell_prototypes,
-         const PackingTube& tube, const PackingSettings& settings)
+         const PackingTube& tube, const PackingSettings& settings,
+         std::span<const CellPose> poses = {})
       : tube_(tube), settings_(settings) {
     for (const auto& mesh : meshes) prototypes_.push_back(centred(mesh));
     std::mt19937 generator(settings.seed);
-    for (const std::size_t p : cell_prototypes) {
+    for (std::size_t c = 0; c < cell_prototypes.size(); ++c) {
+      const std::size_t p = cell_prototypes[c];
       RigidCell cell;
       cell.prototype = p;
-      cell.orientation = random_orientation(generator);
-      cell.centre_um = random_place(generator, tube, kStartScale * prototypes_.at(p).reach_um);
+      if (poses.empty()) {
+        cell.orientation = random_orientation(generator);
+        cell.centre_um = random_place(generator, tube, kStartScale * prototypes_.at(p).reach_um);
+      } else {
+        cell.orientation = orientation_of(poses[c]);
+        cell.centre_um = poses[c].centre_um;
+      }
       cells_.push_back(cell);
       for (std::size_t v = 0; v < prototypes_[p].offsets_um.size(); ++v) {
         owners_.push_back(static_cast<std::uint32_t>(cells_.size() - 1));
       }
     }
+  }
+
+  // At full size: the first problem of cells placed by hand (closer than the gap to another
+  // cell, to their own image across the period, or to the wall), or nothing.
+  std::optional<std::string> placement_problem() {
+    place(1.0);
+    const double wall_limit_um = tube_.radius_um - settings_.wall_gap_um;
+    std::size_t offset = 0;
+    for (std::size_t c = 0; c < cells_.size(); ++c) {
+      const auto count = prototypes_[cells_[c].prototype].offsets_um.size();
+      double low_x = std::numeric_limits<double>::infinity(), high_x = -low_x, outermost = 0.0;
+      for (std::size_t v = offset; v < offset + count; ++v) {
+        low_x = std::min(low_x, positions_[v].x());
+        high_x = std::max(high_x, positions_[v].x());
+        outermost = std::max(outermost, std::hypot(positions_[v].y(), positions_[v].z()));
+      }
+      offset += count;
+      if (outermost > wall_limit_um) {
+        return "cell " + std::to_string(c) + " reaches " + format_number(outermost) +
+               " um from the axis: closer to the wall (radius " + format_number(tube_.radius_um) +
+               " um) than the wall repulsion's range, " + format_number(settings_.wall_gap_um) +
+               " um";
+      }
+      if (high_x - low_x + settings_.cell_gap_um > tube_.length_um) {
+        return "cell " + std::to_string(c) + " is " + format_number(high_x - low_x) +
+               " um long along the axis: it meets its own image across the tube's period (" +
+               format_number(tube_.length_um) + " um)";
+      }
+    }
+    std::vector<Vec3> ignored(positions_.size(), Vec3::Zero());
+    const auto statistics = contact::add_cell_contact_forces(
+        positions_, owners_, {1.0, settings_.cell_gap_um},
+        contact::PeriodicBox{{tube_.length_um, 0.0, 0.0}}, ignored, contact_workspace_);
+    if (statistics.pairs_in_range == 0) return std::nullopt;
+    for (std::size_t v = 0; v < positions_.size(); ++v) {
+      if (ignored[v] == Vec3::Zero()) continue;
+      return "cell " + std::to_string(owners_[v]) +
+             " comes closer to another cell than the contact range, " +
+             format_number(settings_.cell_gap_um) + " um (the closest vertices of two cells are " +
+             format_number(statistics.closest_um) + " um apart)";
+    }
+    return "two cells' vertices coincide";
   }
 
   // One push of every overlapping cell; whether any overlapped.
@@ -259,6 +319,42 @@ std::vector<std::optional<std::size_t>> find_pierced_cells(
   return pierced;
 }
 
+// A vertex of one cell inside another: a surface through another one. `what` names the option.
+void require_no_pierced_cells(const Packing& packing,
+                              std::span<const mesh::TriangleMesh> prototypes,
+                              std::span<const std::size_t> cell_prototypes, const PackingTube& tube,
+                              bool by_hand) {
+  std::vector<std::span<const mesh::Triangle>> triangles;
+  for (const std::size_t prototype : cell_prototypes) {
+    triangles.emplace_back(prototypes[prototype].triangles);
+  }
+  const auto pierced = find_pierced_cells(packing.positions_um, triangles,
+                                          contact::PeriodicBox{{tube.length_um, 0.0, 0.0}});
+  for (std::size_t a = 0; a < pierced.size(); ++a) {
+    if (!pierced[a]) continue;
+    const std::string problem =
+        "cell " + std::to_string(a) + " pierces cell " + std::to_string(*pierced[a]);
+    if (by_hand) throw InputError("suspension.cells", problem);
+    throw RuntimeFailure("packing: " + problem);
+  }
+}
+
+Packing place_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
+                            std::span<const std::size_t> cell_prototypes,
+                            std::span<const CellPose> poses, const PackingTube& tube,
+                            const PackingSettings& settings) {
+  if (poses.size() != cell_prototypes.size() || poses.empty()) {
+    throw std::invalid_argument("place_cells_in_tube: one pose per cell, and a cell at least");
+  }
+  Packer packer(prototypes, cell_prototypes, tube, settings, poses);
+  if (const auto problem = packer.placement_problem()) {
+    throw InputError("suspension.cells", *problem);
+  }
+  auto packing = packer.result(0);
+  require_no_pierced_cells(packing, prototypes, cell_prototypes, tube, true);
+  return packing;
+}
+
 Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
                            std::span<const std::size_t> cell_prototypes, const PackingTube& tube,
                            const PackingSettings& settings) {
@@ -286,19 +382,8 @@ Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
   }
   packer.place(1.0);
   auto packing = packer.result(iteration);
-  // A vertex of one cell inside another: the packing moved a surface through another one.
-  std::vector<std::span<const mesh::Triangle>> triangles;
-  for (const std::size_t prototype : cell_prototypes) {
-    triangles.emplace_back(prototypes[prototype].triangles);
-  }
-  const auto pierced = find_pierced_cells(packing.positions_um, triangles,
-                                          contact::PeriodicBox{{tube.length_um, 0.0, 0.0}});
-  for (std::size_t a = 0; a < pierced.size(); ++a) {
-    if (pierced[a]) {
-      throw RuntimeFailure("packing: cell " + std::to_string(a) + " pierces cell " +
-                           std::to_string(*pierced[a]));
-    }
-  }
+  // The packing moved a surface through another one.
+  require_no_pierced_cells(packing, prototypes, cell_prototypes, tube, false);
   return packing;
 }
 

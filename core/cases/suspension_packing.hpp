@@ -54,6 +54,23 @@ Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
                            std::span<const std::size_t> cell_prototypes, const PackingTube& tube,
                            const PackingSettings& settings);
 
+// A cell placed by hand: its solid centroid at centre_um; its mesh turned first by spin_deg about
+// its own z (right-handed), then so that its z points along `axis` (any length but 0).
+struct CellPose {
+  Vec3 centre_um = Vec3::Zero();
+  Vec3 axis = Vec3::UnitZ();
+  double spin_deg = 0.0;
+};
+
+// Places one cell per entry of `cell_prototypes` at its pose (`poses`, as many). Throws
+// InputError naming suspension.cells when a cell comes closer than settings.cell_gap_um to
+// another (across the periodic x) or to itself across the period, closer than wall_gap_um to the
+// wall, or inside another cell; `iterations` is 0.
+Packing place_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
+                            std::span<const std::size_t> cell_prototypes,
+                            std::span<const CellPose> poses, const PackingTube& tube,
+                            const PackingSettings& settings);
+
 // Whether `point_um` lies inside the closed surface (its winding number, the solid angle the
 // triangles subtend over 4 pi, rounds to 1): used to check that no packed cell pierces another.
 bool surface_contains(std::span<const Vec3> positions_um, std::span<const mesh::Triangle> triangles,

@@ -133,6 +133,19 @@ std::vector<std::string> Config::string_list(std::string_view path) const {
   return value(path, {OptionType::choice_list}, "string list").get<std::vector<std::string>>();
 }
 
+std::vector<CellPlacement> Config::cell_list(std::string_view path) const {
+  std::vector<CellPlacement> cells;
+  for (const auto& cell : value(path, {OptionType::cell_list}, "cell list")) {
+    CellPlacement placement;
+    placement.morphology = cell.at("morphology").get<std::string>();
+    placement.centre_um = cell.at("centre_um").get<std::array<double, 3>>();
+    if (cell.contains("axis")) placement.axis = cell.at("axis").get<std::array<double, 3>>();
+    placement.spin_deg = cell.value("spin_deg", 0.0);
+    cells.push_back(std::move(placement));
+  }
+  return cells;
+}
+
 units::UnitConverter make_unit_converter(const Config& config) {
   return units::UnitConverter({
       .spacing_um = config.number("lattice.spacing_um"),

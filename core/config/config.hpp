@@ -7,6 +7,7 @@
 // so a diagnostic names the file (or "--set") and the JSON path.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
@@ -37,6 +38,14 @@ struct ConfigRequest {
 
 class Config;
 
+// One element of a cell_list option (option_table.hpp, kCellListFields), defaults filled in.
+struct CellPlacement {
+  std::string morphology;
+  std::array<double, 3> centre_um{};
+  std::array<double, 3> axis{0.0, 0.0, 1.0};  // not normalised
+  double spin_deg = 0.0;
+};
+
 // Throws InputError for unreadable files, JSON syntax errors, unknown keys, wrong types and
 // values out of range.
 Config resolve_config(const ConfigRequest& request = {});
@@ -50,6 +59,7 @@ class Config {
   bool boolean(std::string_view path) const;
   std::string string(std::string_view path) const;                    // string and choice options
   std::vector<std::string> string_list(std::string_view path) const;  // choice lists
+  std::vector<CellPlacement> cell_list(std::string_view path) const;
 
   // A copy with the option at `path` set to `value`: for settings a command derives from the
   // user's (the capillary's time-scale compression). Throws std::logic_error for a path that is

@@ -120,6 +120,18 @@ Option& OptionTable::add_choice_list(std::string path, std::vector<std::string> 
               std::move(doc)});
 }
 
+Option& OptionTable::add_cell_list(std::string path, std::vector<std::string> morphologies,
+                                   std::string doc) {
+  return add({std::move(path),
+              OptionType::cell_list,
+              "",
+              nlohmann::json::array(),
+              {},
+              {},
+              std::move(morphologies),
+              std::move(doc)});
+}
+
 const Option* OptionTable::find(std::string_view path) const {
   const auto row = std::find_if(options_.begin(), options_.end(),
                                 [path](const Option& option) { return option.path == path; });

@@ -22,7 +22,25 @@ enum class OptionType {
   string,
   choice,       // one string of `choices`
   choice_list,  // array of distinct strings, each one of `choices`
+  cell_list,    // array of placed cells (kCellListFields), each morphology one of `choices`
 };
+
+// The fields of one element of a cell_list: a cell of a morphology whose centroid is placed at a
+// point, its symmetry axis (the mesh's z) turned to a direction and then spun about it.
+struct CellListField {
+  std::string_view name;
+  std::string_view json_type;  // "string", "vector" (3 finite numbers) or "number"
+  bool required;
+  std::string_view doc;
+};
+inline constexpr std::array<CellListField, 4> kCellListFields{{
+    {"morphology", "string", true, "One of the morphologies."},
+    {"centre_um", "vector", true, "Where the cell's centroid goes, um."},
+    {"axis", "vector", false,
+     "Direction the cell's symmetry axis (its mesh's z) is turned to; default [0, 0, 1]."},
+    {"spin_deg", "number", false,
+     "Turn about that axis after it, degrees (right-handed); default 0."},
+}};
 
 // One end of the allowed range of a number or integer.
 struct Limit {
@@ -59,6 +77,8 @@ class OptionTable {
                      std::string doc);
   Option& add_choice_list(std::string path, std::vector<std::string> choices,
                           std::vector<std::string> default_value, std::string doc);
+  // Default: the empty list.
+  Option& add_cell_list(std::string path, std::vector<std::string> morphologies, std::string doc);
 
   const std::vector<Option>& options() const { return options_; }
   // The row of an option path, or nullptr.

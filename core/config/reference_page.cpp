@@ -22,6 +22,8 @@ std::string type_name(const Option& option) {
       return "choice";
     case OptionType::choice_list:
       return "list of choices";
+    case OptionType::cell_list:
+      return "list of cells";
   }
   return "";
 }

@@ -19,6 +19,25 @@ json limit_value(const Option& option, double limit) {
   return limit;
 }
 
+json cell_list_node(const Option& option) {
+  json item = object_node();
+  item["required"] = json::array();
+  for (const auto& field : kCellListFields) {
+    json node;
+    if (field.json_type == "vector") {
+      node = {{"type", "array"}, {"items", {{"type", "number"}}}, {"minItems", 3}, {"maxItems", 3}};
+    } else if (field.name == "morphology") {
+      node = {{"type", "string"}, {"enum", option.choices}};
+    } else {
+      node = {{"type", std::string(field.json_type)}};
+    }
+    node["description"] = std::string(field.doc);
+    item["properties"][std::string(field.name)] = node;
+    if (field.required) item["required"].push_back(std::string(field.name));
+  }
+  return {{"type", "array"}, {"items", item}};
+}
+
 json type_node(const Option& option) {
   switch (option.type) {
     case OptionType::number:
@@ -35,6 +54,8 @@ json type_node(const Option& option) {
       return {{"type", "array"},
               {"items", {{"type", "string"}, {"enum", option.choices}}},
               {"uniqueItems", true}};
+    case OptionType::cell_list:
+      return cell_list_node(option);
   }
   throw std::logic_error("type_node: unknown OptionType");
 }

@@ -72,6 +72,9 @@ std::string expected_type(const Option& option) {
       return "one of " + joined(option.choices);
     case OptionType::choice_list:
       return "array of strings, each one of " + joined(option.choices);
+    case OptionType::cell_list:
+      return "array of cells ({\"morphology\": one of " + joined(option.choices) +
+             ", \"centre_um\": [x, y, z], optional \"axis\": [x, y, z] and \"spin_deg\"})";
   }
   throw std::logic_error("expected_type: unknown OptionType");
 }
@@ -114,6 +117,61 @@ std::optional<std::string> choice_problem(const Option& option, const std::strin
     problem += "; did you mean `" + *meant + "`?";
   }
   return problem;
+}
+
+// One field of a cell_list element, or nullopt when it is fine.
+std::optional<std::string> cell_field_problem(const Option& option, const CellListField& field,
+                                              const json& value) {
+  if (field.json_type == "vector") {
+    const bool three = value.is_array() && value.size() == 3 &&
+                       std::all_of(value.begin(), value.end(), [](const json& component) {
+                         return component.is_number() && std::isfinite(component.get<double>());
+                       });
+    if (!three) {
+      return "expected 3 finite numbers, got " +
+             (value.is_array() ? "an array of " + std::to_string(value.size()) : describe(value));
+    }
+    if (field.name == "axis" && value[0].get<double>() == 0.0 && value[1].get<double>() == 0.0 &&
+        value[2].get<double>() == 0.0) {
+      return std::string("the zero vector has no direction");
+    }
+    return std::nullopt;
+  }
+  if (field.json_type == "number") {
+    if (!value.is_number() || !std::isfinite(value.get<double>())) {
+      return "expected a finite number, got " + describe(value);
+    }
+    return std::nullopt;
+  }
+  if (!value.is_string()) return "expected string, got " + describe(value);
+  return choice_problem(option, value.get<std::string>());
+}
+
+std::optional<std::string> cell_list_problem(const Option& option, const json& value) {
+  if (!value.is_array()) return mistyped(option, value);
+  for (std::size_t i = 0; i < value.size(); ++i) {
+    std::string where = "[";  // appended: GCC 12 warns falsely (-Wrestrict) on "[" + std::string
+    where.append(std::to_string(i)).append("]");
+    const auto& cell = value[i];
+    if (!cell.is_object()) return where + ": expected an object, got " + describe(cell);
+    for (const auto& [key, field_value] : cell.items()) {
+      const auto field = std::find_if(kCellListFields.begin(), kCellListFields.end(),
+                                      [&key](const CellListField& f) { return f.name == key; });
+      if (field == kCellListFields.end()) {
+        return where + "." + key + ": unknown key (a cell has morphology, centre_um, axis, " +
+               "spin_deg)";
+      }
+      if (const auto problem = cell_field_problem(option, *field, field_value)) {
+        return where + "." + key + ": " + *problem;
+      }
+    }
+    for (const auto& field : kCellListFields) {
+      if (field.required && !cell.contains(std::string(field.name))) {
+        return where + ": missing " + std::string(field.name);
+      }
+    }
+  }
+  return std::nullopt;
 }
 
 std::optional<std::string> choice_list_problem(const Option& option, const json& value) {
@@ -201,6 +259,8 @@ std::optional<std::string> value_problem(const Option& option, const json& value
       return choice_problem(option, value.get<std::string>());
     case OptionType::choice_list:
       return choice_list_problem(option, value);
+    case OptionType::cell_list:
+      return cell_list_problem(option, value);
   }
   throw std::logic_error("value_problem: unknown OptionType");
 }

@@ -26,6 +26,25 @@ std::string trimmed(const std::string& text) {
 SuspensionMix suspension_mix_from(const config::Config& config) {
   SuspensionMix mix;
   const auto text = config.string(kMixOption);
+  const auto placed = config.cell_list("suspension.cells");
+  if (!placed.empty()) {
+    if (!trimmed(text).empty()) {
+      throw InputError(kMixOption,
+                       "suspension.cells names each cell's morphology: leave the mix "
+                       "empty");
+    }
+    for (const auto& cell : placed) {
+      const auto known = std::find(mix.names.begin(), mix.names.end(), cell.morphology);
+      if (known == mix.names.end()) {
+        mix.names.push_back(cell.morphology);
+        mix.fractions.push_back(0.0);
+      }
+      const auto m = static_cast<std::size_t>(
+          std::find(mix.names.begin(), mix.names.end(), cell.morphology) - mix.names.begin());
+      mix.fractions[m] += 1.0 / static_cast<double>(placed.size());
+    }
+    return mix;
+  }
   if (trimmed(text).empty()) {
     mix.names.push_back(config.string("morphology"));
     mix.fractions.push_back(1.0);
@@ -80,6 +99,10 @@ cases::SuspensionSettings suspension_settings_from(const config::Config& config)
   settings.sample_interval_s = config.number("suspension.sample_interval_s");
   settings.averaging_fraction = config.number("suspension.averaging_fraction");
   settings.profile_rings = static_cast<std::size_t>(config.integer("suspension.profile_rings"));
+  for (const auto& cell : config.cell_list("suspension.cells")) {
+    const auto vector = [](const std::array<double, 3>& v) { return Vec3(v[0], v[1], v[2]); };
+    settings.placed_cells.push_back({vector(cell.centre_um), vector(cell.axis), cell.spin_deg});
+  }
   settings.wall_repulsion_pN_per_um2 = config.number("suspension.wall_repulsion_pN_per_um2");
   settings.wall_repulsion_range_um = config.number("suspension.wall_repulsion_range_um");
   settings.contact = {config.number("suspension.contact_force_pN"),

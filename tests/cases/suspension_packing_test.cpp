@@ -2,6 +2,7 @@
 // wall, the hematocrit from the meshes' own volumes, and one clear error when it cannot be done.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -13,6 +14,7 @@
 #include "mesh/geometry.hpp"
 #include "mesh/icosphere.hpp"
 #include "mesh/import.hpp"
+#include "mesh/transform.hpp"
 
 namespace rbcsim::cases {
 namespace {
@@ -23,7 +25,8 @@ mesh::TriangleMesh shipped_mesh(const std::string& name) {
 
 // Every vertex pair of different cells (nearest periodic image along x) at least the gap apart,
 // every vertex at least the wall gap inside the wall.
-void expect_clear(const Packing& packing, const PackingTube& tube, const PackingSettings& settings) {
+void expect_clear(const Packing& packing, const PackingTube& tube,
+                  const PackingSettings& settings) {
   for (std::size_t a = 0; a < packing.positions_um.size(); ++a) {
     for (const Vec3& p : packing.positions_um[a]) {
       EXPECT_LE(std::hypot(p.y(), p.z()), tube.radius_um - settings.wall_gap_um + 1e-12);
@@ -55,6 +58,69 @@ TEST(SuspensionPacking, PacksMixedCellsClearOfEachOtherAndTheWall) {
   const auto& first = packing.positions_um[0];
   EXPECT_NEAR((first[0] - first[1]).norm(),
               (prototypes[0].positions_um[0] - prototypes[0].positions_um[1]).norm(), 1e-9);
+}
+
+// Cells placed by hand: each solid centroid where asked, the symmetry axis turned as asked (the
+// discocyte's thin direction, its mesh's z, along the tube's x), the hematocrit from the meshes.
+TEST(SuspensionPacking, PlacesCellsByHandWhereAsked) {
+  const std::vector<mesh::TriangleMesh> prototypes{shipped_mesh("discocyte")};
+  const std::vector<std::size_t> cells{0, 0};
+  const PackingTube tube{5.0, 20.0};
+  const PackingSettings settings{0.75, 0.5, 1, 1};
+  const std::vector<CellPose> poses{{Vec3(2.0, 0.0, 0.0), Vec3(1.0, 0.0, 0.0), 0.0},
+                                    {Vec3(12.0, 0.0, 0.0), Vec3(-2.0, 0.0, 0.0), 45.0}};
+  const auto packing = place_cells_in_tube(prototypes, cells, poses, tube, settings);
+  ASSERT_EQ(packing.positions_um.size(), 2u);
+  EXPECT_EQ(packing.iterations, 0u);
+  expect_clear(packing, tube, settings);
+  for (std::size_t c = 0; c < 2; ++c) {
+    mesh::TriangleMesh placed{packing.positions_um[c], prototypes[0].triangles};
+    const Vec3 centroid = mesh::solid_centroid_um(placed);
+    EXPECT_NEAR((centroid - poses[c].centre_um).norm(), 0.0, 1e-9) << c;
+    // A discocyte about 2.5 um thick and 7.8 um across: thin along x, wide across.
+    double low_x = 1e9, high_x = -1e9, widest = 0.0;
+    for (const Vec3& p : placed.positions_um) {
+      low_x = std::min(low_x, p.x());
+      high_x = std::max(high_x, p.x());
+      widest = std::max(widest, std::hypot(p.y(), p.z()));
+    }
+    EXPECT_LT(high_x - low_x, 3.0) << c;
+    EXPECT_GT(widest, 3.5) << c;
+  }
+  EXPECT_NEAR(packing.hematocrit,
+              2.0 * mesh::enclosed_volume_um3(prototypes[0]) / (std::numbers::pi * 25.0 * 20.0),
+              1e-12);
+}
+
+// Cells placed too close to each other (also across the period), to the wall or to their own
+// image are input errors naming suspension.cells, never moved apart silently.
+TEST(SuspensionPacking, RefusesCellsPlacedTooClose) {
+  const std::vector<mesh::TriangleMesh> prototypes{shipped_mesh("discocyte")};
+  const PackingSettings settings{0.75, 0.5, 1, 1};
+  const Vec3 along_x(1.0, 0.0, 0.0);
+  const auto problem = [&](const PackingTube& tube, const std::vector<CellPose>& poses) {
+    const std::vector<std::size_t> cells(poses.size(), 0);
+    try {
+      (void)place_cells_in_tube(prototypes, cells, poses, tube, settings);
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string();
+  };
+  const PackingTube tube{5.0, 20.0};
+  EXPECT_NE(problem(tube, {{Vec3(2, 0, 0), along_x, 0}, {Vec3(4, 0, 0), along_x, 0}})
+                .find("suspension.cells: cell 0 comes closer to another cell"),
+            std::string::npos);
+  // 19.5 um is 2.5 um from 2 um across the period: their faces touch.
+  EXPECT_NE(problem(tube, {{Vec3(2, 0, 0), along_x, 0}, {Vec3(19.5, 0, 0), along_x, 0}})
+                .find("closer to another cell"),
+            std::string::npos);
+  // 3.9 um of radius 1 um off the axis reach 4.9 um: inside the wall's 0.5 um range.
+  EXPECT_NE(problem(tube, {{Vec3(2, 0, 1), along_x, 0}}).find("closer to the wall"),
+            std::string::npos);
+  EXPECT_NE(problem({5.0, 3.0}, {{Vec3(2, 0, 0), along_x, 0}}).find("its own image"),
+            std::string::npos);
+  EXPECT_EQ(problem(tube, {{Vec3(2, 0, 0), along_x, 0}, {Vec3(11, 0, 0), along_x, 0}}), "");
 }
 
 // Twelve discocytes cannot fit a 6 um tube 12 um long (their volume alone is over the lumen's):
@@ -91,8 +157,8 @@ TEST(SuspensionPacking, FindsCellsWhoseSurfacesPassedThroughEachOther) {
   auto pierced = find_pierced_cells(std::vector{at(0.5), at(2.7), at(9.0)}, triangles, box);
   EXPECT_EQ(pierced, (std::vector<std::optional<std::size_t>>{2, std::nullopt, 0}));
   // Without the periodic image nothing overlaps; moving B into A makes the pair pierce each other.
-  pierced = find_pierced_cells(std::vector{at(0.5), at(2.7), at(9.0)}, triangles,
-                               contact::PeriodicBox{});
+  pierced =
+      find_pierced_cells(std::vector{at(0.5), at(2.7), at(9.0)}, triangles, contact::PeriodicBox{});
   EXPECT_EQ(pierced, (std::vector<std::optional<std::size_t>>(3)));
   pierced = find_pierced_cells(std::vector{at(0.5), at(1.9), at(5.0)}, triangles, box);
   EXPECT_EQ(pierced, (std::vector<std::optional<std::size_t>>{1, 0, std::nullopt}));
@@ -103,8 +169,7 @@ TEST(SuspensionPacking, CountsCellsByNumberFractions) {
   const std::vector<double> fractions{0.7, 0.3};
   const std::vector<double> volumes{100.0, 50.0};
   // Mean volume 85: H 0.3 of 2833.33 um^3 is 850 um^3 -> 10 cells, 7 and 3.
-  EXPECT_EQ(cell_counts_for(0.3, 2833.3333, fractions, volumes),
-            (std::vector<std::size_t>{7, 3}));
+  EXPECT_EQ(cell_counts_for(0.3, 2833.3333, fractions, volumes), (std::vector<std::size_t>{7, 3}));
   EXPECT_THROW(cell_counts_for(0.01, 1000.0, fractions, volumes), InputError);
 }
 

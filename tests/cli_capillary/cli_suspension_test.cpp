@@ -143,6 +143,41 @@ TEST(CliSuspension, CellsOvertakingEachOtherInTubeFlowNeverInterpenetrate) {
   EXPECT_EQ(*std::max_element(pierced.begin(), pierced.end()), 0.0);
 }
 
+// Two cells placed by hand (suspension.cells) instead of packed: the run takes them where they
+// are put, names their morphologies, and measures its hematocrit from them.
+TEST(CliSuspension, RunsCellsPlacedByHand) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const auto result = run_rbcsim(
+      std::string(kCoarseTube) +
+          "--set 'suspension.cells=[{\"morphology\": \"stomatocyte-II\", \"centre_um\": [2, "
+          "0, 0], \"axis\": [1, 0, 0]}, {\"morphology\": \"discocyte\", \"centre_um\": [8, "
+          "0.5, 0], \"axis\": [1, 0.2, 0]}]' --quiet --json --output '" +
+          run_dir.string() + "'",
+      scratch.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto suspension = printed_run_result(result, run_dir, "capillary")["suspension"];
+  EXPECT_EQ(suspension["cells"], 2);
+  EXPECT_EQ(suspension["morphologies"], (nlohmann::json{"stomatocyte-II", "discocyte"}));
+  EXPECT_EQ(suspension["packing_iterations"], 0);
+  EXPECT_EQ(suspension["samples_with_pierced_cells"], 0);
+  const auto cells = rbcsim::io::read_csv_file(run_dir / "cells_timeseries.csv");
+  // The first sample (t = 0): the cells where they were put. The table's centroid is the mean
+  // of the vertices: the symmetric discocyte's is its solid centroid; the cup-shaped
+  // stomatocyte's lies off it along the cup's axis (here x) by a fraction of its thickness.
+  const auto x = cells.numbers("centroid_x_um");
+  const auto y = cells.numbers("centroid_y_um");
+  const auto z = cells.numbers("centroid_z_um");
+  EXPECT_NEAR(x[0], 2.0, 0.6);
+  EXPECT_NEAR(y[0], 0.0, 1e-3);  // the generated meshes are symmetric to about 1e-5 um
+  EXPECT_NEAR(z[0], 0.0, 1e-3);
+  EXPECT_NEAR(x[1], 8.0, 1e-3);
+  EXPECT_NEAR(y[1], 0.5, 1e-3);
+  EXPECT_NEAR(z[1], 0.0, 1e-3);
+  EXPECT_EQ(cells.numbers("morphology_index")[0], 0.0);
+  EXPECT_EQ(cells.numbers("morphology_index")[1], 1.0);
+}
+
 std::vector<std::string> rows_of(const fs::path& file) {
   std::vector<std::string> rows;
   std::istringstream text(read_text(file));
@@ -196,6 +231,16 @@ TEST(CliSuspension, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
            {"--hematocrit 0.2 --set suspension.contact_range_um=0.5",
             "suspension.contact_range_um"},
            {"--hematocrit 0.2 --orientations 3", "capillary.orientations"},
+           {"--hematocrit 0.2 --set 'suspension.cells=[{\"morphology\": \"discocyte\", "
+            "\"centre_um\": [2, 0, 0]}]'",
+            "suspension.cells"},
+           {"--set 'suspension.cells=[{\"morphology\": \"discocyte\", \"centre_um\": [2, 0, "
+            "0], \"axis\": [1, 0, 0]}, {\"morphology\": \"discocyte\", \"centre_um\": [3, 0, "
+            "0], \"axis\": [1, 0, 0]}]'",
+            "suspension.cells: cell 0 comes closer to another cell"},
+           {"--set 'suspension.cells=[{\"morphology\": \"discocyte\", \"centre_um\": [2, 0, "
+            "0], \"axis\": [1, 0, 0]}]' --mix discocyte=1",
+            "suspension.mix"},
        }) {
     const auto run = run_rbcsim(std::string(kCoarseTube) + arguments + " --output '" + out + "'",
                                 scratch.path());

@@ -85,6 +85,36 @@ TEST(Validation, ChoicesAndLists) {
             "volume, area_difference, total_curvature, total_area, viscosity, got string \"link\"");
 }
 
+// suspension.cells: each element an object of known keys, the morphology one of the choices, the
+// vectors three finite numbers, the axis not zero; the diagnostic names the element and key.
+TEST(Validation, CellLists) {
+  const auto cells = [](const json& list) { return json{{"suspension", {{"cells", list}}}}; };
+  EXPECT_EQ(problem_of(cells(json::array())), "");
+  EXPECT_EQ(problem_of(cells({{{"morphology", "discocyte"}, {"centre_um", {1, 0, 0}}},
+                              {{"morphology", "stomatocyte-II"},
+                               {"centre_um", {9.5, 1, -1}},
+                               {"axis", {1, 0, 0}},
+                               {"spin_deg", 30}}})),
+            "");
+  EXPECT_EQ(problem_of(cells({{{"morphology", "discocyte"}}})),
+            "run.json: suspension.cells: [0]: missing centre_um");
+  EXPECT_EQ(problem_of(cells({{{"morphology", "discocite"}, {"centre_um", {0, 0, 0}}}})),
+            "run.json: suspension.cells: [0].morphology: \"discocite\" is not one of "
+            "stomatocyte-II, discocyte, echinocyte-III; did you mean `discocyte`?");
+  EXPECT_EQ(problem_of(cells({{{"morphology", "discocyte"}, {"centre_um", {0, 0}}}})),
+            "run.json: suspension.cells: [0].centre_um: expected 3 finite numbers, got an array "
+            "of 2");
+  EXPECT_EQ(problem_of(cells(
+                {{{"morphology", "discocyte"}, {"centre_um", {0, 0, 0}}, {"axis", {0, 0, 0}}}})),
+            "run.json: suspension.cells: [0].axis: the zero vector has no direction");
+  EXPECT_EQ(
+      problem_of(cells({{{"morphology", "discocyte"}, {"centre_um", {0, 0, 0}}, {"angle", 3}}})),
+      "run.json: suspension.cells: [0].angle: unknown key (a cell has morphology, "
+      "centre_um, axis, spin_deg)");
+  EXPECT_EQ(problem_of(cells({"discocyte"})),
+            "run.json: suspension.cells: [0]: expected an object, got string \"discocyte\"");
+}
+
 TEST(Validation, DottedKeysMustBeNested) {
   EXPECT_EQ(problem_of({{"membrane.k_link_kBT", 3}}),
             "run.json: membrane.k_link_kBT: keys are single names; nest objects instead of dots");

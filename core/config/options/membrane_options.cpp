@@ -85,10 +85,11 @@ void add_limits(OptionTable& table) {
                   "Hochmuth & Hampel 1979: 0.5); acts only when membrane.forces names viscosity, "
                   "and 0 is no viscosity.")
       .at_least(0.0);
-  table.add_choice("membrane.viscosity_split", membrane::viscosity_splits().names(),
-                   kMembraneDefaults.viscosity_split,
-                   "How eta_m = sqrt3 gamma_T + sqrt3 gamma_C / 4 is shared by the edge friction: " +
-                       membrane::viscosity_splits().described_names() + ".");
+  table.add_choice(
+      "membrane.viscosity_split", membrane::viscosity_splits().names(),
+      kMembraneDefaults.viscosity_split,
+      "How eta_m = sqrt3 gamma_T + sqrt3 gamma_C / 4 is shared by the edge friction: " +
+          membrane::viscosity_splits().described_names() + ".");
 }
 
 void add_scales_and_variants(OptionTable& table) {

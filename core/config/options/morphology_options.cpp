@@ -8,17 +8,6 @@
 namespace rbcsim::config {
 namespace {
 
-// A morphology is a shape of the sequence (shapes/sequence.hpp) that has a Table 2 parameter set,
-// share/config/<name>.json: the two tables decide the choices together, never a list here.
-std::vector<std::string> morphologies() {
-  std::vector<std::string> names;
-  for (const auto& shape : shapes::shape_sequence().entries()) {
-    const std::string name(shape.name);
-    if (find_embedded_share_file("config/" + name + ".json")) names.push_back(name);
-  }
-  return names;
-}
-
 // A preset is a whole parameter set, share/config/presets/<name>.json, in this order.
 std::vector<std::string> presets() {
   std::vector<std::string> names;
@@ -32,8 +21,18 @@ std::vector<std::string> presets() {
 
 }  // namespace
 
+// The two tables decide the choices together, never a list here.
+std::vector<std::string> morphology_choices() {
+  std::vector<std::string> names;
+  for (const auto& shape : shapes::shape_sequence().entries()) {
+    const std::string name(shape.name);
+    if (find_embedded_share_file("config/" + name + ".json")) names.push_back(name);
+  }
+  return names;
+}
+
 void add_morphology_options(OptionTable& table) {
-  table.add_choice("morphology", morphologies(), "discocyte",
+  table.add_choice("morphology", morphology_choices(), "discocyte",
                    "Cell morphology: selects the built-in shape and its Table 2 stiffnesses.");
   table.add_choice("preset", presets(), "paper",
                    "Whole parameter set under the morphology's and the user's settings: paper (the "

@@ -3,10 +3,16 @@
 #pragma once
 
 #include <array>
+#include <string>
+#include <vector>
 
 #include "config/option_table.hpp"
 
 namespace rbcsim::config {
+
+// The morphologies: the shapes of the sequence (shapes/sequence.hpp) that have a Table 2 parameter
+// set, share/config/<name>.json (the choices of `morphology` and of a cell list).
+std::vector<std::string> morphology_choices();
 
 void add_morphology_options(OptionTable& table);
 void add_physics_options(OptionTable& table);

@@ -16,6 +16,10 @@ void add_suspension_options(OptionTable& table) {
                   "(cell volume over lumen volume); 0: no suspension.")
       .at_least(0.0)
       .at_most(0.7);
+  table.add_cell_list(
+      "suspension.cells", morphology_choices(),
+      "Cells placed by hand instead of packed to suspension.hematocrit: each a morphology, its "
+      "centroid (centre_um, the tube's axis along x at y = z = 0), its symmetry axis and a spin.");
   table.add_string("suspension.mix", "",
                    "Morphologies of the suspension's cells, as number fractions summing to 1: "
                    "discocyte=0.8,echinocyte-III=0.2. Empty: all of the configured morphology.");
