@@ -57,7 +57,8 @@ void CellList::build(std::span<const Vec3> points_um, double reach_um, const Per
   wrapped_um_.assign(points_um.begin(), points_um.end());
   for (Vec3& point : wrapped_um_) {
     for (int axis = 0; axis < 3; ++axis) {
-      if (periodic_[axis]) point[axis] -= period_um_[axis] * std::floor(point[axis] / period_um_[axis]);
+      if (periodic_[axis])
+        point[axis] -= period_um_[axis] * std::floor(point[axis] / period_um_[axis]);
     }
   }
   // A counting sort: points enter their bin in increasing index.
@@ -65,10 +66,10 @@ void CellList::build(std::span<const Vec3> points_um, double reach_um, const Per
   bin_start_.assign(bins + 1, 0);
   for (std::size_t p = 0; p < points_um.size(); ++p) {
     const auto c = bin_coordinates(points_um[p]);
-    bin_of[p] = (static_cast<std::size_t>(c[2]) * bins_per_axis_[1] +
-                 static_cast<std::size_t>(c[1])) *
-                    bins_per_axis_[0] +
-                static_cast<std::size_t>(c[0]);
+    bin_of[p] =
+        (static_cast<std::size_t>(c[2]) * bins_per_axis_[1] + static_cast<std::size_t>(c[1])) *
+            bins_per_axis_[0] +
+        static_cast<std::size_t>(c[0]);
     ++bin_start_[bin_of[p] + 1];
   }
   for (std::size_t b = 0; b < bins; ++b) bin_start_[b + 1] += bin_start_[b];
@@ -105,8 +106,8 @@ std::array<int, 3> CellList::bin_coordinates(const Vec3& point_um) const {
 CellList::Neighbours CellList::neighbours_of_bin(std::size_t b) const {
   const auto nx = static_cast<std::size_t>(bins_per_axis_[0]);
   const auto ny = static_cast<std::size_t>(bins_per_axis_[1]);
-  return neighbours_of_coordinates({static_cast<int>(b % nx), static_cast<int>((b / nx) % ny),
-                                    static_cast<int>(b / (nx * ny))});
+  return neighbours_of_coordinates(
+      {static_cast<int>(b % nx), static_cast<int>((b / nx) % ny), static_cast<int>(b / (nx * ny))});
 }
 
 CellList::Neighbours CellList::neighbours_of_coordinates(const std::array<int, 3>& centre) const {

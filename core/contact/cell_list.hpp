@@ -52,8 +52,8 @@ class CellList {
   // The point indices of all bins, bin after bin, increasing within a bin.
   std::span<const std::uint32_t> points() const { return bin_points_; }
   std::span<const std::uint32_t> bin(std::size_t b) const {
-    return std::span<const std::uint32_t>(bin_points_).subspan(bin_start_[b],
-                                                                bin_start_[b + 1] - bin_start_[b]);
+    return std::span<const std::uint32_t>(bin_points_)
+        .subspan(bin_start_[b], bin_start_[b + 1] - bin_start_[b]);
   }
   std::span<const Run> runs(std::size_t b) const {
     return std::span<const Run>(runs_).subspan(run_start_[b], run_start_[b + 1] - run_start_[b]);

@@ -47,6 +47,8 @@ bool within_reach(const Vec3& offset, const Vec3& half, double reach) {
          std::abs(offset.z()) <= half.z() + reach;
 }
 
+}  // namespace
+
 // The broad phase: per cell, the other cells whose boxes come within `reach` of its own; then the
 // vertices within `reach` of such a neighbour's box, in increasing index.
 void select_candidates(std::span<const Vec3> positions_um, std::span<const std::uint32_t> owner,
@@ -89,8 +91,6 @@ void select_candidates(std::span<const Vec3> positions_um, std::span<const std::
     workspace.candidate_owners.push_back(owner[i]);
   }
 }
-
-}  // namespace
 
 ContactStatistics add_cell_contact_forces(std::span<const Vec3> positions_um,
                                           std::span<const std::uint32_t> owner,

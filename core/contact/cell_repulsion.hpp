@@ -20,9 +20,17 @@
 
 namespace rbcsim::contact {
 
+// How two cells push each other apart (suspension.contact_law).
+//   vertex:  between vertex pairs, as above;
+//   surface: between each vertex and the nearest point of another cell's surface
+//            (surface_repulsion.hpp), along the surface's outward side.
+enum class ContactLaw { vertex, surface };
+
 struct ContactParameters {
-  double force_at_contact_pN = 0.0;  // magnitude at zero distance; 0: no contact force
-  double range_um = 0.0;             // > 0 when the force is not 0
+  // vertex: the magnitude at zero distance; surface: at half the range. 0: no contact force.
+  double force_at_contact_pN = 0.0;
+  double range_um = 0.0;  // > 0 when the force is not 0
+  ContactLaw law = ContactLaw::vertex;
 };
 
 // What one evaluation found, over all vertices.
@@ -48,6 +56,12 @@ struct ContactWorkspace {
   std::vector<std::uint32_t> candidate_owners;
   CellList list;
 };
+
+// The broad phase of both laws: in `workspace`, the vertices within `reach_um` of another cell's
+// bounding box (candidates, ascending, with their positions and owners). Throws
+// std::invalid_argument for owners not grouped cell by cell.
+void select_candidates(std::span<const Vec3> positions_um, std::span<const std::uint32_t> owner,
+                       double reach_um, const PeriodicBox& box, ContactWorkspace& workspace);
 
 // Adds the contact forces to forces_pN (one per position). `owner[i]` is the cell of vertex i,
 // the vertices grouped cell by cell (owner non-decreasing); pairs of one cell never interact (the

@@ -114,6 +114,33 @@ void CoupledSimulation::set_cell_contact(const contact::ContactParameters& param
   }
 }
 
+// Every cell's triangles in the numbering of contact_positions_um_ (cells one after the other),
+// and each vertex's triangles: the surface law's input, fixed once the cells are added.
+void CoupledSimulation::build_contact_surfaces() {
+  contact_triangles_.clear();
+  std::vector<std::vector<std::uint32_t>> of_vertex(contact_positions_um_.size());
+  std::uint32_t offset = 0;
+  for (const auto& cell : cells_) {
+    for (const auto& triangle : cell.model().triangles()) {
+      std::array<std::uint32_t, 3> global{};
+      for (std::size_t c = 0; c < 3; ++c) {
+        global[c] = offset + static_cast<std::uint32_t>(triangle[c]);
+        of_vertex[global[c]].push_back(static_cast<std::uint32_t>(contact_triangles_.size()));
+      }
+      contact_triangles_.push_back(global);
+    }
+    offset += static_cast<std::uint32_t>(cell.vertex_count());
+  }
+  contact_vertex_triangle_offsets_.assign(1, 0);
+  contact_vertex_triangles_.clear();
+  for (const auto& triangles : of_vertex) {
+    contact_vertex_triangles_.insert(contact_vertex_triangles_.end(), triangles.begin(),
+                                     triangles.end());
+    contact_vertex_triangle_offsets_.push_back(
+        static_cast<std::uint32_t>(contact_vertex_triangles_.size()));
+  }
+}
+
 void CoupledSimulation::add_contact_forces() {
   if (contact_.force_at_contact_pN == 0.0 || cells_.size() < 2) return;
   contact_positions_um_.clear();
@@ -124,9 +151,20 @@ void CoupledSimulation::add_contact_forces() {
     contact_owners_.insert(contact_owners_.end(), positions.size(), static_cast<std::uint32_t>(k));
   }
   contact_forces_pN_.assign(contact_positions_um_.size(), Vec3::Zero());
-  contact_statistics_ =
-      contact::add_cell_contact_forces(contact_positions_um_, contact_owners_, contact_,
-                                       contact_box_, contact_forces_pN_, contact_workspace_);
+  if (contact_.law == contact::ContactLaw::surface) {
+    if (contact_vertex_triangle_offsets_.size() != contact_positions_um_.size() + 1) {
+      build_contact_surfaces();
+    }
+    const contact::ContactSurfaces surfaces{contact_triangles_, contact_vertex_triangle_offsets_,
+                                            contact_vertex_triangles_};
+    contact_statistics_ = contact::add_surface_contact_forces(
+        contact_positions_um_, contact_owners_, surfaces, contact_, contact_box_,
+        contact_forces_pN_, contact_workspace_);
+  } else {
+    contact_statistics_ =
+        contact::add_cell_contact_forces(contact_positions_um_, contact_owners_, contact_,
+                                         contact_box_, contact_forces_pN_, contact_workspace_);
+  }
   if (contact_statistics_.close_pairs > 0) ++close_contact_steps_;
   std::size_t offset = 0;
   for (auto& cell : cells_) {

@@ -34,6 +34,7 @@
 #include "common/state_archive.hpp"
 #include "contact/cell_list.hpp"
 #include "contact/cell_repulsion.hpp"
+#include "contact/surface_repulsion.hpp"
 #include "coupling/cell.hpp"
 #include "coupling/cytoplasm_indicator.hpp"
 #include "coupling/stability.hpp"
@@ -194,6 +195,7 @@ class CoupledSimulation {
   template <class Body>
   void for_each_cell(const Body& body);
   void add_contact_forces();
+  void build_contact_surfaces();
   void advance_fluid();
   void apply_membrane_friction();
   void advance_cells();
@@ -229,6 +231,9 @@ class CoupledSimulation {
   std::vector<Vec3> contact_positions_um_;
   std::vector<std::uint32_t> contact_owners_;
   std::vector<Vec3> contact_forces_pN_;
+  std::vector<std::array<std::uint32_t, 3>> contact_triangles_;  // the surface law's
+  std::vector<std::uint32_t> contact_vertex_triangle_offsets_;
+  std::vector<std::uint32_t> contact_vertex_triangles_;
   std::vector<ibm::SpreadSource> spread_sources_;  // one per cell, rebuilt every step
   std::vector<RegisteredObserver> observers_;
   std::vector<std::unique_ptr<StopCriterion>> stop_criteria_;

@@ -1,7 +1,8 @@
 // Contact between cells in the coupled step (CoupledSimulation::set_cell_contact): two capsules
 // pushed into each other stop at the repulsion's range, the contact adds no net force, and the
 // result does not depend on the thread count, also with more cells than threads (the step's
-// parallel loop over cells). Cells colliding in shear: tests/cli_capillary/cli_suspension_test.cpp.
+// parallel loop over cells), with either law. Cells colliding in shear:
+// tests/cli_capillary/cli_suspension_test.cpp.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -29,20 +30,20 @@ const contact::ContactParameters kContact{50.0, 0.75};
 // along x (just inside the range) in a periodic box, each pushed towards the other with 0.5 pN per
 // vertex (321 pN). (Starting farther apart, the film between them drains for thousands of steps
 // before they meet.)
-std::unique_ptr<CoupledSimulation> pushed_pair() {
-  auto simulation = std::make_unique<CoupledSimulation>(periodic_fluid(36, 20, 20),
-                                                        plasma_units(), CouplingParameters{});
+std::unique_ptr<CoupledSimulation> pushed_pair(
+    const contact::ContactParameters& contact = kContact) {
+  auto simulation = std::make_unique<CoupledSimulation>(periodic_fluid(36, 20, 20), plasma_units(),
+                                                        CouplingParameters{});
   for (const double x_um : {6.5, 11.2}) {
     const auto sphere = sphere_mesh(3, 2.0, Vec3(x_um, 5.0, 5.0));
     simulation->add_cell(membrane::MembraneModel(sphere, capsule_parameters(300.0)),
                          sphere.positions_um);
   }
-  simulation->add_external_force(
-      [](std::size_t cell, const Cell&, std::span<Vec3> forces_pN) {
-        const double direction = cell == 0 ? 1.0 : -1.0;
-        for (Vec3& force : forces_pN) force.x() += direction * kPushPerVertexPN;
-      });
-  simulation->set_cell_contact(kContact, "test");
+  simulation->add_external_force([](std::size_t cell, const Cell&, std::span<Vec3> forces_pN) {
+    const double direction = cell == 0 ? 1.0 : -1.0;
+    for (Vec3& force : forces_pN) force.x() += direction * kPushPerVertexPN;
+  });
+  simulation->set_cell_contact(contact, "test");
   return simulation;
 }
 
@@ -102,6 +103,31 @@ TEST(CellContact, OneAndTwoThreadsGiveTheSameRun) {
   EXPECT_EQ(positions[0], positions[1]);
 }
 
+// The surface law (contact/surface_repulsion.hpp) in the coupled step: the capsules' vertices
+// meet the other's surface within the range, the pushes and their reactions on the triangles
+// cancel to round-off, and one and two threads give the same run.
+TEST(CellContact, SurfaceLawInTheCoupledStep) {
+  std::vector<std::vector<Vec3>> positions;
+  for (const int threads : {1, 2}) {
+    const ThreadCountScope scope(threads);
+    auto simulation = pushed_pair({5.0, 0.75, contact::ContactLaw::surface});
+    for (int step = 0; step < 200; ++step) simulation->step();
+    EXPECT_GT(simulation->contact_statistics().pairs_in_range, 0u);
+    EXPECT_LT(simulation->contact_statistics().closest_um, 0.75);
+    Vec3 net = Vec3::Zero();
+    double magnitude = 0.0;
+    for (std::size_t c = 0; c < 2; ++c) {
+      for (const Vec3& force : simulation->cell(c).external_forces_pN()) {
+        net += force;
+        magnitude += force.norm();
+      }
+    }
+    EXPECT_LT(net.norm(), 1e-12 * magnitude);
+    positions.push_back(simulation->positions_now_um(1));
+  }
+  EXPECT_EQ(positions[0], positions[1]);
+}
+
 TEST(CellContact, MoreCellsThanThreadsGiveTheSameRunOnOneAndTwoThreads) {
   // Seven small capsules in a row along x, alternately above and below y = 5 um, neighbours
   // 0.4 um apart (within the range), driven alternately along +x and -x: the step's loop over
@@ -112,8 +138,7 @@ TEST(CellContact, MoreCellsThanThreadsGiveTheSameRunOnOneAndTwoThreads) {
     auto simulation = std::make_unique<CoupledSimulation>(periodic_fluid(48, 20, 16),
                                                           plasma_units(), CouplingParameters{});
     for (int c = 0; c < 7; ++c) {
-      const auto sphere =
-          sphere_mesh(3, 1.4, Vec3(2.0 + 3.0 * c, 5.0 + (c % 2 ? 0.8 : -0.8), 4.0));
+      const auto sphere = sphere_mesh(3, 1.4, Vec3(2.0 + 3.0 * c, 5.0 + (c % 2 ? 0.8 : -0.8), 4.0));
       simulation->add_cell(membrane::MembraneModel(sphere, capsule_parameters(300.0)),
                            sphere.positions_um);
     }

@@ -61,6 +61,10 @@ void add_suspension_options(OptionTable& table) {
                   "Cell-cell repulsion between two vertices of different cells at zero distance, "
                   "falling as (1 - d/range)^2.")
       .at_least(0.0);
+  table.add_choice("suspension.contact_law", {"vertex", "surface"}, "vertex",
+                   "How cells push each other apart: vertex (vertex pairs, F0 (1 - d/r)^2, "
+                   "contact_force_pN at d = 0) or surface (each vertex from the nearest point of "
+                   "another cell's surface, F (r/d - 1)^2, contact_force_pN at d = r/2).");
   table
       .add_number("suspension.contact_range_um", "um", kSuspensionDefaults.contact.range_um,
                   "Range of the cell-cell repulsion; at least the membranes' longest edge.")

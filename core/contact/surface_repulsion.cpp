@@ -1,0 +1,174 @@
+#include "contact/surface_repulsion.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+namespace rbcsim::contact {
+namespace {
+
+// One vertex's push from one other cell.
+struct SurfaceContact {
+  std::uint32_t vertex = 0;
+  std::uint32_t other_cell = 0;
+  std::uint32_t triangle = 0;
+  std::array<double, 3> weights{};
+  Vec3 force_pN = Vec3::Zero();
+  double distance_um = 0.0;
+};
+
+// The nearest point so far of one other cell's surface.
+struct Nearest {
+  double distance_um = std::numeric_limits<double>::infinity();
+  std::uint32_t triangle = 0;
+  std::array<double, 3> weights{};
+  Vec3 from_surface_um = Vec3::Zero();  // x_i - c
+  Vec3 normal = Vec3::Zero();           // the triangle's outward (unnormalised)
+};
+
+double longest_edge_um(std::span<const Vec3> positions_um, const ContactSurfaces& surfaces,
+                       const PeriodicBox& box) {
+  double longest = 0.0;
+  for (const auto& t : surfaces.triangles) {
+    for (int e = 0; e < 3; ++e) {
+      const double length =
+          box.minimum_image(positions_um[t[static_cast<std::size_t>(e)]] -
+                            positions_um[t[static_cast<std::size_t>((e + 1) % 3)]])
+              .norm();
+      longest = std::max(longest, length);
+    }
+  }
+  return longest;
+}
+
+}  // namespace
+
+std::array<double, 3> nearest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b,
+                                          const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return {1.0, 0.0, 0.0};
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return {0.0, 1.0, 0.0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0) {
+    const double v = d1 / (d1 - d3);
+    return {1.0 - v, v, 0.0};
+  }
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return {0.0, 0.0, 1.0};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0) {
+    const double w = d2 / (d2 - d6);
+    return {1.0 - w, 0.0, w};
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0.0, 1.0 - w, w};
+  }
+  const double denominator = 1.0 / (va + vb + vc);
+  const double v = vb * denominator, w = vc * denominator;
+  return {1.0 - v - w, v, w};
+}
+
+ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
+                                             std::span<const std::uint32_t> owner,
+                                             const ContactSurfaces& surfaces,
+                                             const ContactParameters& parameters,
+                                             const PeriodicBox& box, std::span<Vec3> forces_pN,
+                                             ContactWorkspace& workspace) {
+  if (owner.size() != positions_um.size() || forces_pN.size() != positions_um.size() ||
+      surfaces.vertex_triangle_offsets.size() != positions_um.size() + 1) {
+    throw std::invalid_argument("surface contact: one owner, force and triangle row per position");
+  }
+  ContactStatistics statistics;
+  if (parameters.force_at_contact_pN == 0.0) return statistics;
+  const double range = parameters.range_um;
+  if (!(range > 0.0)) throw std::invalid_argument("surface contact: the range must be > 0");
+  // A triangle with a point within the range of x_i has a vertex within range + its longest
+  // edge of x_i: those vertices are found, and their triangles tried.
+  const double reach = (range + longest_edge_um(positions_um, surfaces, box)) * (1.0 + 1e-9);
+  select_candidates(positions_um, owner, reach, box, workspace);
+  if (workspace.candidates.empty()) return statistics;
+  const std::span<const std::uint32_t> kept = workspace.candidates;
+  const std::span<const std::uint32_t> kept_owner = workspace.candidate_owners;
+  CellList& list = workspace.list;
+  list.build(workspace.candidate_positions_um, reach, box, kept_owner);
+
+  const auto count = static_cast<std::ptrdiff_t>(kept.size());
+  std::vector<std::vector<SurfaceContact>> found(kept.size());
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::ptrdiff_t signed_k = 0; signed_k < count; ++signed_k) {
+    const auto k = static_cast<std::size_t>(signed_k);
+    const std::uint32_t i = kept[k];
+    const Vec3& x = positions_um[i];
+    // Per other cell (in order of first meeting), its nearest surface point.
+    std::vector<std::pair<std::uint32_t, Nearest>> nearest;
+    list.for_each_candidate(workspace.candidate_positions_um[k], [&](std::uint32_t m) {
+      const std::uint32_t cell = kept_owner[m];
+      if (cell == owner[i]) return;
+      const std::uint32_t j = kept[m];
+      auto entry = std::find_if(nearest.begin(), nearest.end(),
+                                [cell](const auto& e) { return e.first == cell; });
+      if (entry == nearest.end()) {
+        nearest.push_back({cell, Nearest{}});
+        entry = nearest.end() - 1;
+      }
+      // x_i placed next to x_j: the triangles are taken around x_j's own position.
+      const Vec3 here = positions_um[j] + box.minimum_image(x - positions_um[j]);
+      for (std::uint32_t r = surfaces.vertex_triangle_offsets[j];
+           r < surfaces.vertex_triangle_offsets[j + 1]; ++r) {
+        const std::uint32_t t = surfaces.vertex_triangles[r];
+        const auto& triangle = surfaces.triangles[t];
+        std::array<Vec3, 3> corner;
+        for (std::size_t c = 0; c < 3; ++c) {
+          corner[c] =
+              positions_um[j] + box.minimum_image(positions_um[triangle[c]] - positions_um[j]);
+        }
+        const auto w = nearest_on_triangle(here, corner[0], corner[1], corner[2]);
+        const Vec3 point = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
+        const double distance = (here - point).norm();
+        // Ties (a shared edge or vertex) keep the first triangle met: a fixed order.
+        if (distance < entry->second.distance_um) {
+          entry->second = {distance, t, w, here - point,
+                           (corner[1] - corner[0]).cross(corner[2] - corner[0])};
+        }
+      }
+    });
+    for (const auto& [cell, near] : nearest) {
+      if (!(near.distance_um < range)) continue;
+      const double d = std::max(near.distance_um, 0.01 * range);
+      const double excess = range / d - 1.0;
+      const double magnitude = parameters.force_at_contact_pN * excess * excess;
+      Vec3 direction = near.distance_um > 0.0 ? Vec3(near.from_surface_um / near.distance_um)
+                                              : Vec3(near.normal.normalized());
+      // On the inner side of the triangle: already through, pushed back out.
+      if (direction.dot(near.normal) < 0.0) direction = -direction;
+      found[k].push_back(
+          {i, cell, near.triangle, near.weights, magnitude * direction, near.distance_um});
+    }
+    std::sort(found[k].begin(), found[k].end(),
+              [](const auto& a, const auto& b) { return a.other_cell < b.other_cell; });
+  }
+  // Serially, in the order of (vertex, other cell): each vertex's push and its reaction on the
+  // other surface's triangle.
+  for (const auto& contacts : found) {
+    for (const auto& contact : contacts) {
+      forces_pN[contact.vertex] += contact.force_pN;
+      const auto& triangle = surfaces.triangles[contact.triangle];
+      for (std::size_t c = 0; c < 3; ++c)
+        forces_pN[triangle[c]] -= contact.weights[c] * contact.force_pN;
+      ++statistics.pairs_in_range;
+      if (contact.distance_um < 0.25 * range) ++statistics.close_pairs;
+      statistics.closest_um = std::min(statistics.closest_um, contact.distance_um);
+    }
+  }
+  return statistics;
+}
+
+}  // namespace rbcsim::contact
