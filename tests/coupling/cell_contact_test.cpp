@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "cases/suspension_packing.hpp"
@@ -47,6 +48,19 @@ std::unique_ptr<CoupledSimulation> pushed_pair(
   return simulation;
 }
 
+// The sum of both cells' external forces (pushes and contact) and the sum of their magnitudes.
+std::pair<Vec3, double> net_external_force(const CoupledSimulation& simulation) {
+  Vec3 net = Vec3::Zero();
+  double magnitude = 0.0;
+  for (std::size_t c = 0; c < 2; ++c) {
+    for (const Vec3& force : simulation.cell(c).external_forces_pN()) {
+      net += force;
+      magnitude += force.norm();
+    }
+  }
+  return {net, magnitude};
+}
+
 double closest_vertices_um(const CoupledSimulation& simulation) {
   const auto a = simulation.positions_now_um(0);
   const auto b = simulation.positions_now_um(1);
@@ -79,14 +93,7 @@ TEST(CellContact, PushedCellsStopAtTheRangeWithoutNetForce) {
     ASSERT_FALSE(cases::surface_contains(b, sphere.triangles, p));
   }
   // The pushes cancel exactly; the contact forces cancel pair by pair.
-  Vec3 net = Vec3::Zero();
-  double magnitude = 0.0;
-  for (std::size_t c = 0; c < 2; ++c) {
-    for (const Vec3& force : simulation->cell(c).external_forces_pN()) {
-      net += force;
-      magnitude += force.norm();
-    }
-  }
+  const auto [net, magnitude] = net_external_force(*simulation);
   EXPECT_GT(simulation->contact_statistics().pairs_in_range, 0u);
   EXPECT_LT(net.norm(), 1e-13 * magnitude);
 }
@@ -114,14 +121,7 @@ TEST(CellContact, SurfaceLawInTheCoupledStep) {
     for (int step = 0; step < 200; ++step) simulation->step();
     EXPECT_GT(simulation->contact_statistics().pairs_in_range, 0u);
     EXPECT_LT(simulation->contact_statistics().closest_um, 0.75);
-    Vec3 net = Vec3::Zero();
-    double magnitude = 0.0;
-    for (std::size_t c = 0; c < 2; ++c) {
-      for (const Vec3& force : simulation->cell(c).external_forces_pN()) {
-        net += force;
-        magnitude += force.norm();
-      }
-    }
+    const auto [net, magnitude] = net_external_force(*simulation);
     EXPECT_LT(net.norm(), 1e-12 * magnitude);
     positions.push_back(simulation->positions_now_um(1));
   }
