@@ -154,7 +154,9 @@ std::optional<std::string> cell_list_problem(const Option& option, const json& v
     where.append(std::to_string(i)).append("]");
     const auto& cell = value[i];
     if (!cell.is_object()) return where + ": expected an object, got " + describe(cell);
-    for (const auto& [key, field_value] : cell.items()) {
+    for (const auto& item : cell.items()) {
+      const std::string& key = item.key();
+      const json& field_value = item.value();
       const auto field = std::find_if(kCellListFields.begin(), kCellListFields.end(),
                                       [&key](const CellListField& f) { return f.name == key; });
       if (field == kCellListFields.end()) {
