@@ -131,32 +131,36 @@ std::pair<double, double> cell_free_layer_um(const coupling::CoupledSimulation& 
           static_cast<double>(populated) / static_cast<double>(outermost.size())};
 }
 
-// The cells' volume fraction in rings about the axis.
-std::vector<double> hematocrit_profile(const coupling::CoupledSimulation& simulation,
-                                       const SuspensionSettings& settings) {
+// Every cell's surface now: its vertices (um) and triangles, gathered once per sample for the
+// measures that need whole surfaces.
+struct CellSurfaces {
   std::vector<std::vector<Vec3>> positions_um;
   std::vector<std::span<const mesh::Triangle>> triangles;
+};
+
+CellSurfaces surfaces_of(const coupling::CoupledSimulation& simulation) {
+  CellSurfaces surfaces;
   for (std::size_t c = 0; c < simulation.cells().size(); ++c) {
-    positions_um.push_back(simulation.positions_now_um(c));
-    triangles.push_back(simulation.cell(c).model().triangles());
+    surfaces.positions_um.push_back(simulation.positions_now_um(c));
+    surfaces.triangles.push_back(simulation.cell(c).model().triangles());
   }
+  return surfaces;
+}
+
+// The cells' volume fraction in rings about the axis.
+std::vector<double> hematocrit_profile(const CellSurfaces& surfaces,
+                                       const SuspensionSettings& settings) {
   RadialProfileGrid grid;
   grid.radius_um = 0.5 * settings.tube_diameter_um;
   grid.length_um = settings.tube_length_um;
   grid.rings = settings.profile_rings;
-  return radial_volume_fraction(positions_um, triangles, grid);
+  return radial_volume_fraction(surfaces.positions_um, surfaces.triangles, grid);
 }
 
 // How many cells have a vertex inside another cell, across the tube's periodic length.
-std::size_t pierced_cell_count(const coupling::CoupledSimulation& simulation, double length_um) {
-  std::vector<std::vector<Vec3>> positions_um;
-  std::vector<std::span<const mesh::Triangle>> triangles;
-  for (std::size_t c = 0; c < simulation.cells().size(); ++c) {
-    positions_um.push_back(simulation.positions_now_um(c));
-    triangles.push_back(simulation.cell(c).model().triangles());
-  }
-  const auto pierced =
-      find_pierced_cells(positions_um, triangles, contact::PeriodicBox{{length_um, 0.0, 0.0}});
+std::size_t pierced_cell_count(const CellSurfaces& surfaces, double length_um) {
+  const auto pierced = find_pierced_cells(surfaces.positions_um, surfaces.triangles,
+                                          contact::PeriodicBox{{length_um, 0.0, 0.0}});
   return static_cast<std::size_t>(
       std::ranges::count_if(pierced, [](const auto& other) { return other.has_value(); }));
 }
@@ -204,9 +208,10 @@ class SuspensionRecorder {
         cell_free_layer_um(simulation, radius_um, settings_.tube_length_um);
     sample.contact_pairs = simulation.contact_statistics().pairs_in_range;
     sample.close_contact_pairs = simulation.contact_statistics().close_pairs;
-    sample.pierced_cells = pierced_cell_count(simulation, settings_.tube_length_um);
+    const auto surfaces = surfaces_of(simulation);
+    sample.pierced_cells = pierced_cell_count(surfaces, settings_.tube_length_um);
     if (sample.pierced_cells > 0) ++run_.samples_with_pierced_cells;
-    sample.volume_fraction_by_ring = hematocrit_profile(simulation, settings_);
+    sample.volume_fraction_by_ring = hematocrit_profile(surfaces, settings_);
     run_.samples.push_back(sample);
     sample_steps_.push_back(simulation.time_step());
   }
