@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -21,6 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using rbcsim::testing::printed_run_result;
+using rbcsim::testing::read_lines;
 using rbcsim::testing::read_text;
 using rbcsim::testing::run_rbcsim;
 using rbcsim::testing::ScratchDirectory;
@@ -178,13 +178,6 @@ TEST(CliSuspension, RunsCellsPlacedByHand) {
   EXPECT_EQ(cells.numbers("morphology_index")[1], 1.0);
 }
 
-std::vector<std::string> rows_of(const fs::path& file) {
-  std::vector<std::string> rows;
-  std::istringstream text(read_text(file));
-  for (std::string row; std::getline(text, row);) rows.push_back(row);
-  return rows;
-}
-
 // --checkpoint-every leaves the run's last checkpoint in its directory; --resume of that directory
 // runs the steps after it again and must rewrite the same "suspension" object of result.json, the
 // same two time series (the samples before the checkpoint come from it) and snapshot collections.
@@ -198,11 +191,11 @@ TEST(CliSuspension, ResumeRewritesTheStraightRunsResults) {
   ASSERT_EQ(straight.exit_code, 0) << straight.err;
   ASSERT_TRUE(fs::exists(run_dir / "checkpoint.bin"));
   const auto straight_result = nlohmann::json::parse(read_text(run_dir / "result.json"));
-  const auto straight_flow = rows_of(run_dir / "suspension_timeseries.csv");
-  const auto straight_cells = rows_of(run_dir / "cells_timeseries.csv");
-  const auto straight_profile = rows_of(run_dir / "hematocrit_profile.csv");
-  const auto straight_membranes = rows_of(run_dir / "cells.pvd");
-  const auto straight_fluid = rows_of(run_dir / "fluid.pvd");
+  const auto straight_flow = read_lines(run_dir / "suspension_timeseries.csv");
+  const auto straight_cells = read_lines(run_dir / "cells_timeseries.csv");
+  const auto straight_profile = read_lines(run_dir / "hematocrit_profile.csv");
+  const auto straight_membranes = read_lines(run_dir / "cells.pvd");
+  const auto straight_fluid = read_lines(run_dir / "fluid.pvd");
   ASSERT_GT(straight_result["suspension"]["steps"].get<double>(), 50.0);
   for (const char* name : {"result.json", "suspension_timeseries.csv", "cells_timeseries.csv",
                            "hematocrit_profile.csv"}) {
@@ -213,11 +206,11 @@ TEST(CliSuspension, ResumeRewritesTheStraightRunsResults) {
   ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
   const auto resumed_result = nlohmann::json::parse(read_text(run_dir / "result.json"));
   EXPECT_EQ(resumed_result["suspension"], straight_result["suspension"]);
-  EXPECT_EQ(rows_of(run_dir / "suspension_timeseries.csv"), straight_flow);
-  EXPECT_EQ(rows_of(run_dir / "cells_timeseries.csv"), straight_cells);
-  EXPECT_EQ(rows_of(run_dir / "hematocrit_profile.csv"), straight_profile);
-  EXPECT_EQ(rows_of(run_dir / "cells.pvd"), straight_membranes);
-  EXPECT_EQ(rows_of(run_dir / "fluid.pvd"), straight_fluid);
+  EXPECT_EQ(read_lines(run_dir / "suspension_timeseries.csv"), straight_flow);
+  EXPECT_EQ(read_lines(run_dir / "cells_timeseries.csv"), straight_cells);
+  EXPECT_EQ(read_lines(run_dir / "hematocrit_profile.csv"), straight_profile);
+  EXPECT_EQ(read_lines(run_dir / "cells.pvd"), straight_membranes);
+  EXPECT_EQ(read_lines(run_dir / "fluid.pvd"), straight_fluid);
 }
 
 TEST(CliSuspension, BadInputExitsTwoWithOneLineAndNoRunDirectory) {

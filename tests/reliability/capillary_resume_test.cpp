@@ -134,13 +134,6 @@ TEST(CapillaryResume, InterruptedThenResumedRunEndsAsAStraightRun) {
   }
 }
 
-std::vector<std::string> rows_of(const std::filesystem::path& file) {
-  std::vector<std::string> rows;
-  std::istringstream text(rbcsim::testing::read_text(file));
-  for (std::string row; std::getline(text, row);) rows.push_back(row);
-  return rows;
-}
-
 std::string number_text(double value) {
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", value);
@@ -185,9 +178,9 @@ TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
   ASSERT_NO_FATAL_FAILURE(run_with_checkpoints(scratch, run_dir, settings));
   const auto straight_result =
       nlohmann::json::parse(rbcsim::testing::read_text(run_dir / "result.json"));
-  const auto straight_rows = rows_of(run_dir / "capillary_timeseries.csv");
-  const auto straight_cells = rows_of(run_dir / "cell0.pvd");
-  const auto straight_fluid = rows_of(run_dir / "fluid.pvd");
+  const auto straight_rows = rbcsim::testing::read_lines(run_dir / "capillary_timeseries.csv");
+  const auto straight_cells = rbcsim::testing::read_lines(run_dir / "cell0.pvd");
+  const auto straight_fluid = rbcsim::testing::read_lines(run_dir / "fluid.pvd");
   std::filesystem::remove(run_dir / "result.json");
   std::filesystem::remove(run_dir / "capillary_timeseries.csv");
 
@@ -197,11 +190,11 @@ TEST(CapillaryResume, ResumeThroughTheBinaryRewritesTheSameResults) {
   const auto resumed_result =
       nlohmann::json::parse(rbcsim::testing::read_text(run_dir / "result.json"));
   EXPECT_EQ(resumed_result["capillary"], straight_result["capillary"]);
-  EXPECT_EQ(rows_of(run_dir / "capillary_timeseries.csv"), straight_rows);
+  EXPECT_EQ(rbcsim::testing::read_lines(run_dir / "capillary_timeseries.csv"), straight_rows);
   // The collections go on from the interrupted run's: every snapshot, before and after step 27.
   EXPECT_GT(straight_cells.size(), 10u);
-  EXPECT_EQ(rows_of(run_dir / "cell0.pvd"), straight_cells);
-  EXPECT_EQ(rows_of(run_dir / "fluid.pvd"), straight_fluid);
+  EXPECT_EQ(rbcsim::testing::read_lines(run_dir / "cell0.pvd"), straight_cells);
+  EXPECT_EQ(rbcsim::testing::read_lines(run_dir / "fluid.pvd"), straight_fluid);
 }
 
 // A snapshot collection the resumed run cannot continue is bad input: one line naming it, exit 2,

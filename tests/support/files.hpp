@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace rbcsim::testing {
 
@@ -18,6 +19,14 @@ inline std::string read_text(const std::filesystem::path& file) {
 
 inline void write_file(const std::filesystem::path& file, const std::string& text) {
   std::ofstream(file, std::ios::binary) << text;
+}
+
+// A text file's lines (a CSV table or a .pvd collection, compared row by row).
+inline std::vector<std::string> read_lines(const std::filesystem::path& file) {
+  std::vector<std::string> lines;
+  std::istringstream text(read_text(file));
+  for (std::string line; std::getline(text, line);) lines.push_back(line);
+  return lines;
 }
 
 // A JSON file the binary wrote (result.json, config.json, ...).
