@@ -72,6 +72,7 @@ shapes::EnergyShapeProgress minimisation_progress(const GenerateOptions& options
 }
 
 void run_generate(const GenerateOptions& options) {
+  if (!options.output.empty()) mesh::require_mesh_file_format(options.output);
   auto request = options.config;
   if (options.method) assign_option(request, "--method", "mesh.method", *options.method);
   if (options.subdivisions) {
@@ -118,6 +119,7 @@ void run_generate(const GenerateOptions& options) {
 }
 
 void run_import(const ImportCommandOptions& options, const CLI::App& command) {
+  if (!options.output.empty()) mesh::require_mesh_file_format(options.output);
   mesh::ImportOptions import_options;
   if (command.count("--scale-to-area") > 0)
     import_options.target_area_um2 = options.target_area_um2;

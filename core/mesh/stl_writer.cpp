@@ -52,14 +52,25 @@ void write_stl_binary(const std::filesystem::path& path, const TriangleMesh& mes
   io::write_file_atomically(path, [&mesh](std::ostream& out) { write_stl_binary(out, mesh); });
 }
 
-void write_mesh_file(const std::filesystem::path& path, const TriangleMesh& mesh) {
+namespace {
+bool is_stl(const std::filesystem::path& path) {
   const auto extension = path.extension().string();
-  if (extension == ".stl" || extension == ".STL") {
+  return extension == ".stl" || extension == ".STL";
+}
+}  // namespace
+
+void require_mesh_file_format(const std::filesystem::path& path) {
+  if (is_stl(path) || path.extension() == ".vtp") return;
+  throw InputError(path.string(),
+                   "unknown output format '" + path.extension().string() + "' (use .stl or .vtp)");
+}
+
+void write_mesh_file(const std::filesystem::path& path, const TriangleMesh& mesh) {
+  require_mesh_file_format(path);
+  if (is_stl(path)) {
     write_stl_binary(path, mesh);
-  } else if (extension == ".vtp") {
-    io::write_vtk_polydata(path, mesh.positions_um, mesh.triangles, {});
   } else {
-    throw InputError(path.string(), "unknown output format '" + extension + "' (use .stl or .vtp)");
+    io::write_vtk_polydata(path, mesh.positions_um, mesh.triangles, {});
   }
 }
 

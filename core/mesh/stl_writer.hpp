@@ -14,6 +14,9 @@ void write_stl_binary(std::ostream& out, const TriangleMesh& mesh);
 void write_stl_binary(const std::filesystem::path& path, const TriangleMesh& mesh);
 
 // By extension: ".stl" (binary STL) or ".vtp" (VTK XML PolyData); anything else is an InputError.
+// Commands check the format before the work that makes the mesh, so a minimisation of minutes
+// does not end in a format error.
+void require_mesh_file_format(const std::filesystem::path& path);
 void write_mesh_file(const std::filesystem::path& path, const TriangleMesh& mesh);
 
 }  // namespace rbcsim::mesh
