@@ -220,7 +220,7 @@ TEST(CliSuspension, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
            std::pair<std::string, std::string>{
                "--hematocrit 0.2 --mix discocyte=0.5,stomatocyte-II=0.4", "suspension.mix"},
            {"--hematocrit 0.2 --mix discocyte=1,platelet=0", "suspension.mix"},
-           {"--hematocrit 0.7 --set suspension.packing_max_iterations=1500", "could not pack"},
+           {"--hematocrit 0.7 --set suspension.packing_max_iterations=100", "could not pack"},
            {"--hematocrit 0.2 --set suspension.contact_range_um=0.5",
             "suspension.contact_range_um"},
            {"--hematocrit 0.2 --orientations 3", "capillary.orientations"},

@@ -82,7 +82,7 @@ TEST(CliStretch, WritesTheRunDirectoryAndPrintsItsResultAsJson) {
 // its mesh, the same on every run.
 TEST(CliStretch, TextTableAndMeshChecksumOfAnImportedFile) {
   const ScratchDirectory scratch;
-  ASSERT_EQ(run_rbcsim("mesh generate --subdivisions 2 -o '" +
+  ASSERT_EQ(run_rbcsim("mesh generate --method parametric --subdivisions 2 -o '" +
                            (scratch.path() / "cell.stl").string() + "'",
                        scratch.path())
                 .exit_code,
