@@ -93,8 +93,11 @@ void print_summary(const nlohmann::ordered_json& result, const cases::Suspension
       a.samples, a.relative_apparent_viscosity, a.relative_apparent_viscosity_sd,
       a.discharge_hematocrit, s["tube_to_discharge_hematocrit"].get<double>(),
       a.cell_free_layer_um);
-  std::printf("%zu steps (%.4g s), steps with a near overlap %zu: %s\n", run.steps, run.time_s,
-              run.close_contact_steps, run.stop_reason.c_str());
+  std::printf(
+      "%zu steps (%.4g s), steps with a near overlap %zu, with a capped contact push "
+      "%zu: %s\n",
+      run.steps, run.time_s, run.close_contact_steps, run.capped_contact_steps,
+      run.stop_reason.c_str());
   std::printf("wall time %.1f s, %d thread(s); run directory %s\n", directory.elapsed_s(),
               directory.threads(), directory.path().c_str());
 }

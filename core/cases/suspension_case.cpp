@@ -472,6 +472,7 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
     run.steps = simulation.time_step();
     run.time_s = simulation.time_s();
     run.close_contact_steps = simulation.close_contact_steps();
+    run.capped_contact_steps = simulation.capped_contact_steps();
     run.force_capped_steps = simulation.capped_steps_per_cell();
   };
   try {

@@ -45,7 +45,10 @@ struct SuspensionSettings {
   std::size_t profile_rings = 10;   // of the hematocrit profile (suspension_profile.hpp)
   double wall_repulsion_pN_per_um2 = 20.0;
   double wall_repulsion_range_um = 0.5;
-  contact::ContactParameters contact{5.0, 0.75};
+  // The surface law's cap: the membrane's own vertex force cap (MembraneParameters::
+  // vertex_force_cap_pN, HemoCell's 50 pN), so that a contact push alone never exceeds what a
+  // vertex may carry.
+  contact::ContactParameters contact{5.0, 0.75, contact::ContactLaw::vertex, 50.0};
   PackingSettings packing;
   // Cells placed by hand (suspension.cells): one pose per cell, instead of the packing.
   std::vector<CellPose> placed_cells;
@@ -118,6 +121,7 @@ struct SuspensionRun {
   std::size_t steps = 0;
   double time_s = 0.0;
   std::size_t close_contact_steps = 0;
+  std::size_t capped_contact_steps = 0;  // steps with a push held at the contact's force cap
   std::size_t samples_with_pierced_cells = 0;
   std::vector<std::size_t> force_capped_steps;  // per cell
   std::string stop_reason;

@@ -31,12 +31,19 @@ struct ContactParameters {
   double force_at_contact_pN = 0.0;
   double range_um = 0.0;  // > 0 when the force is not 0
   ContactLaw law = ContactLaw::vertex;
+  // surface: the largest push one vertex gets from one other cell. Closer than where the law
+  // reaches it the push stays at the cap: the law's stiffness, (r/d)^3-steep, would otherwise
+  // outgrow what the explicit coupling of membrane and fluid can integrate. Every capped push is
+  // counted (ContactStatistics::capped_pushes). vertex: unused (its pair force is bounded by
+  // force_at_contact_pN).
+  double force_cap_pN = std::numeric_limits<double>::infinity();
 };
 
 // What one evaluation found, over all vertices.
 struct ContactStatistics {
   std::size_t pairs_in_range = 0;  // ordered pairs (i, j) of different cells within the range
   std::size_t close_pairs = 0;     // of those, within a quarter of the range: near overlap
+  std::size_t capped_pushes = 0;   // surface law: (vertex, other cell) pushes held at the cap
   double closest_um = std::numeric_limits<double>::infinity();
 };
 

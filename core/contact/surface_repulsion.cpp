@@ -17,6 +17,7 @@ struct SurfaceContact {
   std::array<double, 3> weights{};
   Vec3 force_pN = Vec3::Zero();
   double distance_um = 0.0;
+  bool capped = false;  // held at ContactParameters::force_cap_pN
 };
 
 // The nearest point so far of one other cell's surface.
@@ -90,6 +91,9 @@ ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
   if (parameters.force_at_contact_pN == 0.0) return statistics;
   const double range = parameters.range_um;
   if (!(range > 0.0)) throw std::invalid_argument("surface contact: the range must be > 0");
+  if (!(parameters.force_cap_pN > 0.0)) {
+    throw std::invalid_argument("surface contact: the force cap must be > 0");
+  }
   // A triangle with a point within the range of x_i has a vertex within range + its longest
   // edge of x_i: those vertices are found, and their triangles tried.
   const double reach = (range + longest_edge_um(positions_um, surfaces, box)) * (1.0 + 1e-9);
@@ -144,13 +148,15 @@ ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
       if (!(near.distance_um < range)) continue;
       const double d = std::max(near.distance_um, 0.01 * range);
       const double excess = range / d - 1.0;
-      const double magnitude = parameters.force_at_contact_pN * excess * excess;
+      const double law = parameters.force_at_contact_pN * excess * excess;
+      const bool capped = law > parameters.force_cap_pN;
+      const double magnitude = capped ? parameters.force_cap_pN : law;
       Vec3 direction = near.distance_um > 0.0 ? Vec3(near.from_surface_um / near.distance_um)
                                               : Vec3(near.normal.normalized());
       // On the inner side of the triangle: already through, pushed back out.
       if (direction.dot(near.normal) < 0.0) direction = -direction;
       found[k].push_back(
-          {i, cell, near.triangle, near.weights, magnitude * direction, near.distance_um});
+          {i, cell, near.triangle, near.weights, magnitude * direction, near.distance_um, capped});
     }
     std::sort(found[k].begin(), found[k].end(),
               [](const auto& a, const auto& b) { return a.other_cell < b.other_cell; });
@@ -165,6 +171,7 @@ ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
         forces_pN[triangle[c]] -= contact.weights[c] * contact.force_pN;
       ++statistics.pairs_in_range;
       if (contact.distance_um < 0.25 * range) ++statistics.close_pairs;
+      if (contact.capped) ++statistics.capped_pushes;
       statistics.closest_um = std::min(statistics.closest_um, contact.distance_um);
     }
   }

@@ -15,7 +15,9 @@
 //     F(d) = F_half (r / d - 1)^2 for d < r: F_half at d = r / 2, 0 with zero slope at the range r,
 //     growing as (r / d)^2 towards contact (a barrier: the lattice's regularised forces on two
 //     nearby vertices largely cancel in the fluid, by a part that vanishes with their distance).
-// d is floored at r / 100 (F at most 9801 F_half): the stability checks see anything closer.
+// F is held at ContactParameters::force_cap_pN where the law exceeds it (counted), and d is
+// floored at r / 100 (F at most 9801 F_half without a cap): the stability checks see anything
+// closer.
 // Momentum: the reactions sum to -F_i (the weights sum to 1), so the net force is zero to
 // round-off (not bit for bit, unlike the vertex pairs).
 //

@@ -166,6 +166,7 @@ void CoupledSimulation::add_contact_forces() {
                                          contact_box_, contact_forces_pN_, contact_workspace_);
   }
   if (contact_statistics_.close_pairs > 0) ++close_contact_steps_;
+  if (contact_statistics_.capped_pushes > 0) ++capped_contact_steps_;
   std::size_t offset = 0;
   for (auto& cell : cells_) {
     auto forces = cell.external_forces_pN();
@@ -391,6 +392,7 @@ void CoupledSimulation::save_state(StateArchive& archive) const {
   if (forces_spread_) throw std::logic_error("save_state between spread_forces() and step()");
   archive.put("simulation.time_step", {static_cast<double>(time_step_)});
   archive.put("simulation.close_contact_steps", {static_cast<double>(close_contact_steps_)});
+  archive.put("simulation.capped_contact_steps", {static_cast<double>(capped_contact_steps_)});
   fluid_->save_state(archive);
   if (cytoplasm_) cytoplasm_->save_state(archive);
   for (std::size_t k = 0; k < cells_.size(); ++k) {
@@ -406,6 +408,8 @@ void CoupledSimulation::restore_state(StateArchive& archive) {
   time_step_ = static_cast<std::size_t>(archive.take_number("simulation.time_step"));
   close_contact_steps_ =
       static_cast<std::size_t>(archive.take_number("simulation.close_contact_steps"));
+  capped_contact_steps_ =
+      static_cast<std::size_t>(archive.take_number("simulation.capped_contact_steps"));
   fluid_->restore_state(archive);
   if (cytoplasm_) cytoplasm_->restore_state(archive, cells_);
   for (std::size_t k = 0; k < cells_.size(); ++k) {

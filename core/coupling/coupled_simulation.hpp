@@ -132,10 +132,12 @@ class CoupledSimulation {
   // Pairs are found across the lattice's periodic axes (minimum image). Throws InputError naming
   // `option` for a non-positive range with a non-zero force.
   void set_cell_contact(const contact::ContactParameters& parameters, std::string_view option);
-  // What the latest step's contact found, and in how many steps so far two cells came within a
-  // quarter of the range (ContactStatistics::close_pairs > 0).
+  // What the latest step's contact found; in how many steps so far two cells came within a
+  // quarter of the range (ContactStatistics::close_pairs > 0), and in how many a push was held
+  // at the contact's force cap (ContactStatistics::capped_pushes > 0).
   const contact::ContactStatistics& contact_statistics() const { return contact_statistics_; }
   std::size_t close_contact_steps() const { return close_contact_steps_; }
+  std::size_t capped_contact_steps() const { return capped_contact_steps_; }
   void add_stop_criterion(std::unique_ptr<StopCriterion> criterion);
 
   // One coupled step (phases 1-6).
@@ -227,6 +229,7 @@ class CoupledSimulation {
   contact::ContactWorkspace contact_workspace_;
   contact::ContactStatistics contact_statistics_;
   std::size_t close_contact_steps_ = 0;
+  std::size_t capped_contact_steps_ = 0;
   // Every cell's vertices one after the other: the contact's input and output.
   std::vector<Vec3> contact_positions_um_;
   std::vector<std::uint32_t> contact_owners_;

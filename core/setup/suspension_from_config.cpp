@@ -108,7 +108,8 @@ cases::SuspensionSettings suspension_settings_from(const config::Config& config)
   settings.contact = {
       config.number("suspension.contact_force_pN"), config.number("suspension.contact_range_um"),
       config.string("suspension.contact_law") == "surface" ? contact::ContactLaw::surface
-                                                           : contact::ContactLaw::vertex};
+                                                           : contact::ContactLaw::vertex,
+      config.number("suspension.contact_force_cap_pN")};
   settings.packing.cell_gap_um = settings.contact.range_um;
   settings.packing.wall_gap_um = settings.wall_repulsion_range_um;
   settings.packing.seed = static_cast<unsigned>(config.integer("suspension.seed"));

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -73,18 +74,21 @@ struct Push {
   Vec3 net_pN = Vec3::Zero();
   double magnitude_pN = 0.0;
   std::vector<Vec3> forces_pN;
+  ContactStatistics statistics;
 };
 
-Push push_of(const Patches& p, ContactLaw law) {
-  const ContactParameters parameters{5.0, 0.75, law};
+Push push_of(const Patches& p, ContactLaw law,
+             double cap_pN = std::numeric_limits<double>::infinity()) {
+  const ContactParameters parameters{5.0, 0.75, law, cap_pN};
   Push push;
   push.forces_pN.assign(p.positions_um.size(), Vec3::Zero());
   ContactWorkspace workspace;
   if (law == ContactLaw::surface) {
-    add_surface_contact_forces(p.positions_um, p.owner, p.surfaces(), parameters, {},
-                               push.forces_pN, workspace);
+    push.statistics = add_surface_contact_forces(p.positions_um, p.owner, p.surfaces(), parameters,
+                                                 {}, push.forces_pN, workspace);
   } else {
-    add_cell_contact_forces(p.positions_um, p.owner, parameters, {}, push.forces_pN, workspace);
+    push.statistics =
+        add_cell_contact_forces(p.positions_um, p.owner, parameters, {}, push.forces_pN, workspace);
   }
   for (std::size_t v = 0; v < push.forces_pN.size(); ++v) {
     if (v < p.per_patch) push.normal_on_a_pN -= push.forces_pN[v].z();
@@ -142,6 +146,29 @@ TEST(SurfaceContact, FacingPatchesArePushedApartHarderTheCloserTheyAre) {
   const double per_contact = 5.0 * std::pow(0.75 / 0.1 - 1.0, 2);
   EXPECT_GT(surface[2], 100.0 * per_contact);
   EXPECT_LT(surface[2], 162.0 * per_contact * (1.0 + 1e-9));
+}
+
+// The cap holds each push at force_cap_pN where the law would exceed it, and counts it; pushes
+// below the cap are untouched. At a 0.05 um gap the law asks 5 (0.75 / 0.05 - 1)^2 = 980 pN of
+// each facing contact; at 0.3 um, 11.25 pN at most.
+TEST(SurfaceContact, TheCapHoldsEachPushAtItAndCountsIt) {
+  const double cap_pN = 50.0;
+  const auto close = facing_patches(0.05);
+  const auto capped = push_of(close, ContactLaw::surface, cap_pN);
+  const auto free = push_of(close, ContactLaw::surface);
+  EXPECT_EQ(free.statistics.capped_pushes, 0u);
+  EXPECT_GE(capped.statistics.capped_pushes, 100u);
+  EXPECT_LE(capped.statistics.capped_pushes, capped.statistics.pairs_in_range);
+  // Each of at most 162 contacts pushes A away by at most the cap.
+  EXPECT_LE(capped.normal_on_a_pN, 162.0 * cap_pN * (1.0 + 1e-9));
+  EXPECT_GE(capped.normal_on_a_pN, 100.0 * cap_pN);
+  EXPECT_GT(free.normal_on_a_pN, 10.0 * capped.normal_on_a_pN);
+  EXPECT_LT(capped.net_pN.norm(), 1e-12 * capped.magnitude_pN);
+
+  const auto apart = facing_patches(0.3);
+  const auto below = push_of(apart, ContactLaw::surface, cap_pN);
+  EXPECT_EQ(below.statistics.capped_pushes, 0u);
+  EXPECT_EQ(below.forces_pN, push_of(apart, ContactLaw::surface).forces_pN);
 }
 
 // A vertex that is already through the other surface is pushed back out (the vertex pairs pull it

@@ -126,6 +126,7 @@ TEST(SuspensionResume, InterruptedThenResumedRunEndsAsAStraightRun) {
   EXPECT_EQ(resumed.time_s, straight.time_s);
   EXPECT_EQ(resumed.stop_reason, straight.stop_reason);
   EXPECT_EQ(resumed.close_contact_steps, straight.close_contact_steps);
+  EXPECT_EQ(resumed.capped_contact_steps, straight.capped_contact_steps);
   EXPECT_EQ(resumed.samples_with_pierced_cells, straight.samples_with_pierced_cells);
   EXPECT_EQ(resumed.force_capped_steps, straight.force_capped_steps);
   ASSERT_EQ(resumed.samples.size(), straight.samples.size());

@@ -66,6 +66,12 @@ void add_suspension_options(OptionTable& table) {
                    "contact_force_pN at d = 0) or surface (each vertex from the nearest point of "
                    "another cell's surface, F (r/d - 1)^2, contact_force_pN at d = r/2).");
   table
+      .add_number("suspension.contact_force_cap_pN", "pN", kSuspensionDefaults.contact.force_cap_pN,
+                  "Surface law: the largest push a vertex gets from one other cell; closer in, "
+                  "the push stays at the cap (its steps are counted as capped_contact_steps). "
+                  "The default is membrane.vertex_force_cap_pN's.")
+      .above(0.0);
+  table
       .add_number("suspension.contact_range_um", "um", kSuspensionDefaults.contact.range_um,
                   "Range of the cell-cell repulsion; at least the membranes' longest edge.")
       .above(0.0);
