@@ -38,14 +38,15 @@ std::vector<std::size_t> cells_of(const std::vector<cases::SuspensionMorphology>
   return cells;
 }
 
-// The morphology of each cell placed by hand, as an index into the mix's names (which list the
-// placed cells' morphologies in order of appearance).
+// The kind of each cell placed by hand, as an index into the mix's names (which list the placed
+// cells' kinds in order of appearance).
 std::vector<std::size_t> placed_cells_of(const setup::SuspensionMix& mix,
                                          const std::vector<config::CellPlacement>& placed) {
   std::vector<std::size_t> cells;
   for (const auto& cell : placed) {
-    cells.push_back(static_cast<std::size_t>(
-        std::find(mix.names.begin(), mix.names.end(), cell.morphology) - mix.names.begin()));
+    const auto name = setup::placed_kind_name(cell);
+    cells.push_back(static_cast<std::size_t>(std::find(mix.names.begin(), mix.names.end(), name) -
+                                             mix.names.begin()));
   }
   return cells;
 }
@@ -138,7 +139,10 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
   const auto compression = setup::suspension_compression_from(config);
   const auto simulated = setup::compressed_suspension_config(config, compression.factor);
   const auto settings = setup::suspension_settings_from(simulated);
-  const auto morphologies = setup::suspension_morphologies_from(request, mix, compression.factor);
+  std::vector<std::string> import_notices;
+  const auto morphologies =
+      setup::suspension_morphologies_from(request, mix, compression.factor, &import_notices);
+  for (const auto& notice : import_notices) std::cerr << "rbcsim: notice: " << notice << '\n';
   const auto cells =
       settings.placed_cells.empty()
           ? cells_of(morphologies, mix, settings, config.number("suspension.hematocrit"))

@@ -138,6 +138,7 @@ std::vector<CellPlacement> Config::cell_list(std::string_view path) const {
   for (const auto& cell : value(path, {OptionType::cell_list}, "cell list")) {
     CellPlacement placement;
     placement.morphology = cell.at("morphology").get<std::string>();
+    placement.mesh_file = cell.value("mesh_file", std::string());
     placement.centre_um = cell.at("centre_um").get<std::array<double, 3>>();
     if (cell.contains("axis")) placement.axis = cell.at("axis").get<std::array<double, 3>>();
     placement.spin_deg = cell.value("spin_deg", 0.0);

@@ -41,6 +41,7 @@ class Config;
 // One element of a cell_list option (option_table.hpp, kCellListFields), defaults filled in.
 struct CellPlacement {
   std::string morphology;
+  std::string mesh_file;  // empty: the morphology's own shape
   std::array<double, 3> centre_um{};
   std::array<double, 3> axis{0.0, 0.0, 1.0};  // not normalised
   double spin_deg = 0.0;

@@ -25,16 +25,22 @@ enum class OptionType {
   cell_list,    // array of placed cells (kCellListFields), each morphology one of `choices`
 };
 
-// The fields of one element of a cell_list: a cell of a morphology whose centroid is placed at a
-// point, its symmetry axis (the mesh's z) turned to a direction and then spun about it.
+// The fields of one element of a cell_list: a cell of a morphology (or of a mesh file with a
+// morphology's membrane) whose centroid is placed at a point, its symmetry axis (the mesh's z)
+// turned to a direction and then spun about it.
 struct CellListField {
   std::string_view name;
   std::string_view json_type;  // "string", "vector" (3 finite numbers) or "number"
   bool required;
   std::string_view doc;
 };
-inline constexpr std::array<CellListField, 4> kCellListFields{{
-    {"morphology", "string", true, "One of the morphologies."},
+inline constexpr std::array<CellListField, 5> kCellListFields{{
+    {"morphology", "string", true,
+     "One of the morphologies: the cell's membrane (its Table 2 stiffnesses) and, without a "
+     "mesh_file, its shape."},
+    {"mesh_file", "string", false,
+     "A mesh file read as mesh.file is (STL, OBJ, PLY, OFF; a path from the working "
+     "directory): the cell's stress-free shape instead of the morphology's; default none."},
     {"centre_um", "vector", true, "Where the cell's centroid goes, um."},
     {"axis", "vector", false,
      "Direction the cell's symmetry axis (its mesh's z) is turned to; default [0, 0, 1]."},

@@ -144,7 +144,19 @@ std::optional<std::string> cell_field_problem(const Option& option, const CellLi
     return std::nullopt;
   }
   if (!value.is_string()) return "expected string, got " + describe(value);
+  if (field.name == "mesh_file") {
+    if (value.get_ref<const std::string&>().empty()) return std::string("an empty path");
+    return std::nullopt;
+  }
   return choice_problem(option, value.get<std::string>());
+}
+
+std::string cell_list_keys() {
+  std::string keys;
+  for (const auto& field : kCellListFields) {
+    keys.append(keys.empty() ? "" : ", ").append(field.name);
+  }
+  return keys;
 }
 
 std::optional<std::string> cell_list_problem(const Option& option, const json& value) {
@@ -160,8 +172,7 @@ std::optional<std::string> cell_list_problem(const Option& option, const json& v
       const auto field = std::find_if(kCellListFields.begin(), kCellListFields.end(),
                                       [&key](const CellListField& f) { return f.name == key; });
       if (field == kCellListFields.end()) {
-        return where + "." + key + ": unknown key (a cell has morphology, centre_um, axis, " +
-               "spin_deg)";
+        return where + "." + key + ": unknown key (a cell has " + cell_list_keys() + ")";
       }
       if (const auto problem = cell_field_problem(option, *field, field_value)) {
         return where + "." + key + ": " + *problem;

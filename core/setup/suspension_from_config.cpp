@@ -21,35 +21,8 @@ std::string trimmed(const std::string& text) {
   return text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
 
-}  // namespace
-
-SuspensionMix suspension_mix_from(const config::Config& config) {
-  SuspensionMix mix;
-  const auto text = config.string(kMixOption);
-  const auto placed = config.cell_list("suspension.cells");
-  if (!placed.empty()) {
-    if (!trimmed(text).empty()) {
-      throw InputError(kMixOption,
-                       "suspension.cells names each cell's morphology: leave the mix "
-                       "empty");
-    }
-    for (const auto& cell : placed) {
-      const auto known = std::find(mix.names.begin(), mix.names.end(), cell.morphology);
-      if (known == mix.names.end()) {
-        mix.names.push_back(cell.morphology);
-        mix.fractions.push_back(0.0);
-      }
-      const auto m = static_cast<std::size_t>(
-          std::find(mix.names.begin(), mix.names.end(), cell.morphology) - mix.names.begin());
-      mix.fractions[m] += 1.0 / static_cast<double>(placed.size());
-    }
-    return mix;
-  }
-  if (trimmed(text).empty()) {
-    mix.names.push_back(config.string("morphology"));
-    mix.fractions.push_back(1.0);
-    return mix;
-  }
+// Fills the names and fractions of a non-empty suspension.mix.
+void parse_mix(const std::string& text, SuspensionMix& mix) {
   std::stringstream entries(text);
   std::string entry;
   double sum = 0.0;
@@ -87,6 +60,43 @@ SuspensionMix suspension_mix_from(const config::Config& config) {
   if (std::abs(sum - 1.0) > 1e-6) {
     throw InputError(kMixOption, "the fractions sum to " + format_number(sum) + ", not 1");
   }
+}
+
+}  // namespace
+
+SuspensionMix suspension_mix_from(const config::Config& config) {
+  SuspensionMix mix;
+  const auto text = config.string(kMixOption);
+  const auto placed = config.cell_list("suspension.cells");
+  if (!placed.empty()) {
+    if (!trimmed(text).empty()) {
+      throw InputError(kMixOption,
+                       "suspension.cells names each cell's morphology: leave the mix "
+                       "empty");
+    }
+    for (const auto& cell : placed) {
+      const auto name = placed_kind_name(cell);
+      if (std::find(mix.names.begin(), mix.names.end(), name) == mix.names.end()) {
+        mix.names.push_back(name);
+        mix.fractions.push_back(0.0);
+        mix.morphologies.push_back(cell.morphology);
+        mix.mesh_files.push_back(cell.mesh_file);
+      }
+      const auto m = static_cast<std::size_t>(std::find(mix.names.begin(), mix.names.end(), name) -
+                                              mix.names.begin());
+      mix.fractions[m] += 1.0 / static_cast<double>(placed.size());
+    }
+    return mix;
+  }
+  if (trimmed(text).empty()) {
+    mix.names.push_back(config.string("morphology"));
+    mix.fractions.push_back(1.0);
+  } else {
+    parse_mix(text, mix);
+  }
+  // Packed kinds are morphologies of their own shape.
+  mix.morphologies = mix.names;
+  mix.mesh_files.assign(mix.names.size(), std::string());
   return mix;
 }
 
@@ -120,16 +130,29 @@ cases::SuspensionSettings suspension_settings_from(const config::Config& config)
   return settings;
 }
 
+std::string placed_kind_name(const config::CellPlacement& cell) {
+  return cell.mesh_file.empty() ? cell.morphology : cell.morphology + " (" + cell.mesh_file + ")";
+}
+
 std::vector<cases::SuspensionMorphology> suspension_morphologies_from(
-    const config::ConfigRequest& request, const SuspensionMix& mix, double compression_factor) {
+    const config::ConfigRequest& request, const SuspensionMix& mix, double compression_factor,
+    std::vector<std::string>* import_notices) {
   std::vector<cases::SuspensionMorphology> morphologies;
-  for (const auto& name : mix.names) {
+  for (std::size_t m = 0; m < mix.names.size(); ++m) {
     auto own = request;
-    own.morphology = name;
+    own.morphology = mix.morphologies.at(m);
     auto config = config::resolve_config(own);
     config = config.with("membrane.viscosity_Pa_s_um",
                          config.number("membrane.viscosity_Pa_s_um") / compression_factor);
-    morphologies.push_back({name, cell_mesh_from(config).mesh, membrane_parameters_from(config)});
+    if (!mix.mesh_files.at(m).empty()) {
+      config = config.with("mesh.file", mix.mesh_files[m]);
+    }
+    auto cell = cell_mesh_from(config);
+    if (import_notices) {
+      for (const auto& notice : cell.notices)
+        import_notices->push_back(mix.names[m] + ": " + notice);
+    }
+    morphologies.push_back({mix.names[m], std::move(cell.mesh), membrane_parameters_from(config)});
   }
   return morphologies;
 }

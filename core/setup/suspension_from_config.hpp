@@ -14,18 +14,26 @@ namespace rbcsim::setup {
 // suspension.mix parsed: names (morphologies, in the order given) and number fractions. Empty
 // mix: the configured morphology alone. Throws InputError naming suspension.mix for an unknown
 // morphology, a repeated one, a fraction outside (0, 1] or fractions not summing to 1 (within
-// 1e-6).
+// 1e-6). With suspension.cells, the kinds of the placed cells in order of appearance, each a
+// morphology with, where a cell names one, its mesh file (placed_kind_name).
 struct SuspensionMix {
-  std::vector<std::string> names;
+  std::vector<std::string> names;  // as reported: placed_kind_name
   std::vector<double> fractions;
+  std::vector<std::string> morphologies;  // each kind's membrane (and shape without a file)
+  std::vector<std::string> mesh_files;    // each kind's mesh file; empty: the morphology's shape
 };
 SuspensionMix suspension_mix_from(const config::Config& config);
+// "discocyte", or "discocyte (cells/bent.stl)" for a cell of that mesh file.
+std::string placed_kind_name(const config::CellPlacement& cell);
 
 cases::SuspensionSettings suspension_settings_from(const config::Config& config);
 
-// Each morphology of the mix resolved from `request` with its own --morphology: mesh and membrane.
+// Each kind of the mix resolved from `request` with its own --morphology (and mesh.file where it
+// has one): mesh and membrane. The repairs made on importing a mesh file, each after its kind's
+// name, are appended to `import_notices` when given.
 std::vector<cases::SuspensionMorphology> suspension_morphologies_from(
-    const config::ConfigRequest& request, const SuspensionMix& mix, double compression_factor);
+    const config::ConfigRequest& request, const SuspensionMix& mix, double compression_factor,
+    std::vector<std::string>* import_notices = nullptr);
 
 // As the capillary's (capillary_from_config.hpp): below suspension.max_reynolds_number the run
 // divides the plasma viscosity (and the membrane's) by s and multiplies the drive velocity by s,

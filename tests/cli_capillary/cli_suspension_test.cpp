@@ -178,6 +178,54 @@ TEST(CliSuspension, RunsCellsPlacedByHand) {
   EXPECT_EQ(cells.numbers("morphology_index")[1], 1.0);
 }
 
+// A cell of suspension.cells may bring its own mesh file, with its morphology's membrane: it is
+// a kind of its own, named after the file, and its volume is the file's (the hematocrit of the
+// placed cells is the sum of their true volumes over the lumen's).
+TEST(CliSuspension, RunsACellOfAMeshFile) {
+  const ScratchDirectory scratch;
+  // rbcsim runs in the test's working directory: every file by its full path.
+  const auto disc = (scratch.path() / "disc.stl").string();
+  const auto small = (scratch.path() / "small.stl").string();
+  const auto generated =
+      run_rbcsim("mesh generate --method parametric --subdivisions 2 --json -o '" + disc + "'",
+                 scratch.path());
+  ASSERT_EQ(generated.exit_code, 0) << generated.err;
+  const double disc_um3 =
+      nlohmann::json::parse(generated.out)["report"]["size"]["volume_um3"].get<double>();
+  // The file's cell: the same discocyte shrunk to 60 um^3, well below the discocyte's ~90.
+  const double small_um3 = 60.0;
+  ASSERT_EQ(
+      run_rbcsim("mesh import '" + disc + "' --scale-to-volume 60 --center -o '" + small + "'",
+                 scratch.path())
+          .exit_code,
+      0);
+  const auto cell_list = [](const std::string& file) {
+    return "--set 'suspension.cells=[{\"morphology\": \"discocyte\", \"mesh_file\": \"" + file +
+           "\", \"centre_um\": [2, 0, 0], \"axis\": [1, 0, 0]}, {\"morphology\": \"discocyte\", "
+           "\"centre_um\": [8, 0.5, 0], \"axis\": [1, 0.2, 0]}]' ";
+  };
+  const auto run_dir = scratch.path() / "run";
+  const auto result = run_rbcsim(std::string(kCoarseTube) + cell_list(small) +
+                                     "--quiet --json --output '" + run_dir.string() + "'",
+                                 scratch.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto suspension = printed_run_result(result, run_dir, "capillary")["suspension"];
+  EXPECT_EQ(suspension["morphologies"], (nlohmann::json{"discocyte (" + small + ")", "discocyte"}));
+  const double lumen_um3 = std::numbers::pi * 5.0 * 5.0 * 12.0;
+  // The STL's float32 coordinates move the volume by ~1e-7 of it.
+  EXPECT_NEAR(suspension["packed_hematocrit"].get<double>() * lumen_um3, small_um3 + disc_um3,
+              1e-5 * (small_um3 + disc_um3));
+
+  const auto missing_dir = scratch.path() / "missing";
+  const auto missing = run_rbcsim(std::string(kCoarseTube) + cell_list("/nonexistent/none.stl") +
+                                      "--output '" + missing_dir.string() + "'",
+                                  scratch.path());
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("none.stl"), std::string::npos) << missing.err;
+  EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1) << missing.err;
+  EXPECT_FALSE(fs::exists(missing_dir));
+}
+
 // --checkpoint-every leaves the run's last checkpoint in its directory; --resume of that directory
 // runs the steps after it again and must rewrite the same "suspension" object of result.json, the
 // same two time series (the samples before the checkpoint come from it) and snapshot collections.

@@ -110,7 +110,17 @@ TEST(Validation, CellLists) {
   EXPECT_EQ(
       problem_of(cells({{{"morphology", "discocyte"}, {"centre_um", {0, 0, 0}}, {"angle", 3}}})),
       "run.json: suspension.cells: [0].angle: unknown key (a cell has morphology, "
-      "centre_um, axis, spin_deg)");
+      "mesh_file, centre_um, axis, spin_deg)");
+  EXPECT_EQ(problem_of(cells({{{"morphology", "discocyte"},
+                               {"mesh_file", "cells/bent.stl"},
+                               {"centre_um", {0, 0, 0}}}})),
+            "");
+  EXPECT_EQ(problem_of(cells(
+                {{{"morphology", "discocyte"}, {"mesh_file", ""}, {"centre_um", {0, 0, 0}}}})),
+            "run.json: suspension.cells: [0].mesh_file: an empty path");
+  EXPECT_EQ(problem_of(
+                cells({{{"morphology", "discocyte"}, {"mesh_file", 3}, {"centre_um", {0, 0, 0}}}})),
+            "run.json: suspension.cells: [0].mesh_file: expected string, got number 3");
   EXPECT_EQ(problem_of(cells({"discocyte"})),
             "run.json: suspension.cells: [0]: expected an object, got string \"discocyte\"");
 }
