@@ -70,6 +70,40 @@ Vec3 random_place(std::mt19937& generator, const PackingTube& tube, double clear
   return {x, r * std::cos(angle), r * std::sin(angle)};
 }
 
+// The seeded start of PackingOrientation::axial: cell c at slot slots[c] of N along the axis.
+struct AxialStart {
+  Eigen::Quaterniond orientation;
+  Vec3 centre_um;
+};
+
+AxialStart axial_start(std::mt19937& generator, const PackingTube& tube, double clear_radius_um,
+                       std::size_t slot, std::size_t slots) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double spacing_um = tube.length_um / static_cast<double>(slots);
+  const double x = spacing_um * (static_cast<double>(slot) + 0.5 + 0.5 * (unit(generator) - 0.5));
+  const double r = std::max(tube.radius_um - clear_radius_um, 0.0) * std::sqrt(unit(generator));
+  const double angle = 2.0 * std::numbers::pi * unit(generator);
+  const double spin = 2.0 * std::numbers::pi * unit(generator);
+  return {(Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), Vec3::UnitX()) *
+           Eigen::Quaterniond(Eigen::AngleAxisd(spin, Vec3::UnitZ())))
+              .normalized(),
+          Vec3(x, r * std::cos(angle), r * std::sin(angle))};
+}
+
+// A seeded random order of 0 .. count-1 (Fisher-Yates on the generator's uniform numbers, so
+// that the order does not depend on the standard library's shuffle).
+std::vector<std::size_t> random_order(std::mt19937& generator, std::size_t count) {
+  std::vector<std::size_t> order(count);
+  for (std::size_t i = 0; i < count; ++i) order[i] = i;
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (std::size_t i = count; i > 1; --i) {
+    const auto j =
+        std::min(i - 1, static_cast<std::size_t>(unit(generator) * static_cast<double>(i)));
+    std::swap(order[i - 1], order[j]);
+  }
+  return order;
+}
+
 Eigen::Quaterniond orientation_of(const CellPose& pose) {
   const double spin_rad = pose.spin_deg * std::numbers::pi / 180.0;
   return (Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), pose.axis.normalized()) *
@@ -86,13 +120,22 @@ class Packer {
       : tube_(tube), settings_(settings) {
     for (const auto& mesh : meshes) prototypes_.push_back(centred(mesh));
     std::mt19937 generator(settings.seed);
+    const bool axial = settings.orientation == PackingOrientation::axial;
+    const auto slots = axial && poses.empty() ? random_order(generator, cell_prototypes.size())
+                                              : std::vector<std::size_t>{};
     for (std::size_t c = 0; c < cell_prototypes.size(); ++c) {
       const std::size_t p = cell_prototypes[c];
       RigidCell cell;
       cell.prototype = p;
-      if (poses.empty()) {
+      const double clear_radius_um = kStartScale * prototypes_.at(p).reach_um;
+      if (poses.empty() && axial) {
+        const auto start =
+            axial_start(generator, tube, clear_radius_um, slots[c], cell_prototypes.size());
+        cell.orientation = start.orientation;
+        cell.centre_um = start.centre_um;
+      } else if (poses.empty()) {
         cell.orientation = random_orientation(generator);
-        cell.centre_um = random_place(generator, tube, kStartScale * prototypes_.at(p).reach_um);
+        cell.centre_um = random_place(generator, tube, clear_radius_um);
       } else {
         cell.orientation = orientation_of(poses[c]);
         cell.centre_um = poses[c].centre_um;
@@ -378,7 +421,11 @@ Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
                          format_number(packer.hematocrit_at(clear_scale)) + " (the " +
                          std::to_string(cell_prototypes.size()) +
                          " cells at full size: " + format_number(packer.hematocrit_at(1.0)) +
-                         "); lower the hematocrit or widen/lengthen the tube");
+                         "); lower the hematocrit or widen/lengthen the tube" +
+                         (settings.orientation == PackingOrientation::random
+                              ? std::string(", or start the cells lined up along the axis "
+                                            "(suspension.packing_orientation=axial)")
+                              : std::string()));
   }
   packer.place(1.0);
   auto packing = packer.result(iteration);

@@ -2,7 +2,8 @@
 // force-biased shrink-then-grow packing of the true cell meshes as rigid bodies.
 //
 //   1. Every cell starts at a reduced scale (kStartScale of its size), at a seeded random place in
-//      the lumen and a uniformly random orientation, and they are spread apart rigidly (below);
+//      the lumen and a uniformly random orientation (or lined up along the axis:
+//      PackingOrientation), and they are spread apart rigidly (below);
 //   2. then, repeatedly: overlapping cells (two vertices of different cells closer than
 //      cell_gap_um, the contact's range, across the tube's periodic x; a vertex closer than
 //      wall_gap_um to the wall) push each other apart as rigid bodies, each moved along its net
@@ -30,11 +31,22 @@ struct PackingTube {
   double length_um = 0.0;  // periodic along x over [0, length); the axis at y = z = 0
 };
 
+// How the cells start (suspension.packing_orientation).
+//   random: each at a random place in the lumen, in a uniformly random orientation;
+//   axial:  each with its symmetry axis (its mesh's z) along the tube's axis, spun about it at
+//           random, at one of N evenly spaced places along the axis (the cells in random order,
+//           each jittered by up to a quarter of the spacing) and at a random distance and angle
+//           off it. In a tube not much wider than a cell, randomly turned cells jam before they
+//           reach full size (5 discocytes in a 10 x 30 um tube at H_T 0.3 stopped at 0.94 of
+//           their size); lined up along the axis, as they flow in capillaries, they fit.
+enum class PackingOrientation { random, axial };
+
 struct PackingSettings {
   double cell_gap_um = 0.75;  // no two vertices of different cells closer
   double wall_gap_um = 0.5;   // no vertex closer to the wall
   unsigned seed = 1;
   std::size_t max_iterations = 40000;
+  PackingOrientation orientation = PackingOrientation::random;
 };
 
 // The cells as placed: one vertex array per cell, in the order of `cell_prototypes`.

@@ -123,6 +123,9 @@ cases::SuspensionSettings suspension_settings_from(const config::Config& config)
   settings.packing.cell_gap_um = settings.contact.range_um;
   settings.packing.wall_gap_um = settings.wall_repulsion_range_um;
   settings.packing.seed = static_cast<unsigned>(config.integer("suspension.seed"));
+  settings.packing.orientation = config.string("suspension.packing_orientation") == "axial"
+                                     ? cases::PackingOrientation::axial
+                                     : cases::PackingOrientation::random;
   settings.packing.max_iterations =
       static_cast<std::size_t>(config.integer("suspension.packing_max_iterations"));
   settings.fluid_tolerance = config.number("capillary.fluid_tolerance");

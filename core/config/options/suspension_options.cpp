@@ -88,6 +88,10 @@ void add_suspension_options(OptionTable& table) {
       .above(0.0);
   table.add_integer("suspension.seed", "", 1, "Seed of the packing's random places and turns.")
       .at_least(0);
+  table.add_choice("suspension.packing_orientation", {"random", "axial"}, "random",
+                   "How the packed cells start: random (uniformly random places and "
+                   "orientations) or axial (symmetry axes along the tube, evenly spaced along it "
+                   "in random order), for tubes too narrow for randomly turned cells to pack.");
   table
       .add_integer("suspension.packing_max_iterations", "",
                    static_cast<int>(kSuspensionDefaults.packing.max_iterations),
