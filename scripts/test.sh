@@ -22,9 +22,11 @@ stage "AddressSanitizer + UndefinedBehaviorSanitizer build (clang)"
 # above every file compiles warning-free under both compilers (clang found two tests that passed
 # only under GCC: one relied on its order of evaluating a call's arguments, one on its reading of
 # a one-element braced list as a json array).
+# RBCSIM_FUZZ: the two fuzz targets of the last stage are built here too, the parsers' sources
+# alone instrumented for coverage (a build of their own cost two minutes of CI).
 "$repo_root/scripts/setup.sh" "$repo_root/build-sanitize" -DCMAKE_CXX_COMPILER=clang++-14 \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" \
-  -DRBCSIM_WARNINGS_AS_ERRORS=ON -DRBCSIM_SANITIZE=ON
+  -DRBCSIM_WARNINGS_AS_ERRORS=ON -DRBCSIM_SANITIZE=ON -DRBCSIM_FUZZ=ON
 # Long physics runs are left to the Release stage: under the sanitizers they repeat the code of
 # shorter tests thousands of times at 5-26x the Release cost (a third of the stage's CPU time in
 # December 2026), and the shorter tests run that code under ASan+UBSan too:
@@ -51,34 +53,41 @@ stage "AddressSanitizer + UndefinedBehaviorSanitizer build (clang)"
 #     Spicules...): Echinocyte.Level4ResolvesEverySpicule... for the generator, CliMesh.Generate-
 #     TellsOfUnresolvedSpiculesOnStderr for the spicule count, the cup's measure and the notice,
 #     CellFromConfig.AGeneratedShapeTheMeshDoesNotResolve... for the notice of a run;
-#   seven contact capsules on one and two threads (CellContact.MoreCellsThanThreads...):
-#     CellContact.OneAndTwoThreadsGiveTheSameRun.
+#   the coupled contact of two capsules (CellContact.MoreCellsThanThreads...,
+#     CellContact.PushedCellsStopAtTheRange...): CellContact.OneAndTwoThreadsGiveTheSameRun and
+#     CellContact.SurfaceLawInTheCoupledStep, the same pushed pair;
+#   the finite-difference check of the shape energies' gradients (SurfaceEnergies.EveryGradient-
+#     Matches...): the other SurfaceEnergies.* and EnergyShape.MinimisationHolds..., which runs
+#     the gradients;
+#   the membrane kernels' equivalence at level 3 (AllShapes/KernelEquivalence.*/*3_*): the same
+#     kernels at levels 2 and 4;
+#   the two-layer TRT channel (TwoLayerChannel.Trt...): TwoLayerChannel.BgkPoiseuille... and
+#     ViscosityClasses.*; the sheared capsule's rotation (ShearRotation.StiffSpherical...):
+#     ShearRun.*; FIRE on Euler's buckling (RelaxationMethods.FireFindsEulers...):
+#     RelaxationMethods.FireConvergesThroughTheTotalCurvatureKinks; the stretch fit's recovery
+#     (StretchFit.RecoversTheLinkStiffness...): CliCalibrate.StretchFitWritesParameters..., the
+#     same fit through the command.
 stage "sanitizer tests"
-sanitizer_skip='^(ShearRotation\.CentralMembraneViscosity|EnergyShape\.(TheDiscocyteIsEvansAndFungs|SeededTrials)|CytoplasmRelaxation\.|CliSuspension\.CellsOvertaking|SuspensionPacking\.RefusesATarget|CapillaryCase\.(CompressedRun|SinglePrecision)|StretchCase\.LowResolutionCurve|FluidStretch\.SteadyShape|CliMesh\.(InfoOfAGeneratedMesh|GenerateWritesStl)|ShippedShapes\.TheIcosphereStlReaderRoundTrips|ShapeAnalysis\.CountsTheDrawnEchinocytes|CellFromConfig\.EchinocyteSpiculeCount|CellShapes\.UnresolvedSpicules|CellContact\.MoreCellsThanThreads)'
+sanitizer_skip='^(ShearRotation\.CentralMembraneViscosity|EnergyShape\.(TheDiscocyteIsEvansAndFungs|SeededTrials)|CytoplasmRelaxation\.|CliSuspension\.CellsOvertaking|SuspensionPacking\.RefusesATarget|CapillaryCase\.(CompressedRun|SinglePrecision)|StretchCase\.LowResolutionCurve|FluidStretch\.SteadyShape|CliMesh\.(InfoOfAGeneratedMesh|GenerateWritesStl)|ShippedShapes\.TheIcosphereStlReaderRoundTrips|ShapeAnalysis\.CountsTheDrawnEchinocytes|CellFromConfig\.EchinocyteSpiculeCount|CellShapes\.UnresolvedSpicules|CellContact\.(MoreCellsThanThreads|PushedCellsStop)|SurfaceEnergies\.EveryGradient|AllShapes/KernelEquivalence\.EveryTermSubsetAgreesWithTheReference/[A-Za-z_]+3_|TwoLayerChannel\.Trt|ShearRotation\.StiffSpherical|RelaxationMethods\.FireFindsEulers|StretchFit\.RecoversTheLinkStiffness)'
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir "$repo_root/build-sanitize" --output-on-failure --parallel "$jobs" -LE validate \
   -E "$sanitizer_skip"
 
 stage "fuzzing the STL reader and the config parser (libFuzzer + ASan + UBSan, bounded)"
-# Only the two fuzz targets and the libraries they link are built. A crash fails this script and
-# leaves the input in build-fuzz/ (it then becomes a regression test in tests/reliability).
+# The fuzz targets come from the sanitizer build. A crash fails this script and leaves the input
+# in build-sanitize/fuzz/ (it then becomes a regression test in tests/reliability).
 fuzz_seconds="${RBCSIM_FUZZ_SECONDS:-30}"
-fuzz_generator=()
-[[ -f "$repo_root/build-fuzz/CMakeCache.txt" ]] || fuzz_generator=(-G Ninja)
-cmake -S "$repo_root" -B "$repo_root/build-fuzz" "${fuzz_generator[@]}" \
-  -DCMAKE_CXX_COMPILER=clang++-14 -DRBCSIM_FUZZ=ON \
-  -DRBCSIM_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" >/dev/null
-cmake --build "$repo_root/build-fuzz" --parallel "$jobs" --target fuzz_stl_reader fuzz_config_parser
+fuzz_dir="$repo_root/build-sanitize/fuzz"
+mkdir -p "$fuzz_dir"
 stl_corpus="$(mktemp -d)"
 config_corpus="$(mktemp -d)"
 trap 'rm -rf "$stl_corpus" "$config_corpus"' EXIT
 "$repo_root/build/cli/rbcsim" mesh generate --subdivisions 1 -o "$stl_corpus/icosphere.stl" >/dev/null
 # Prints the fuzzer's last lines (runs, coverage); all of its output if it found something.
 run_fuzzer() {
-  local log="$repo_root/build-fuzz/$1.log"
-  if "$repo_root/build-fuzz/tests/fuzz/$1" -max_total_time="$fuzz_seconds" -rss_limit_mb=4096 \
-    -artifact_prefix="$repo_root/build-fuzz/" "${@:2}" >"$log" 2>&1; then
+  local log="$fuzz_dir/$1.log"
+  if "$repo_root/build-sanitize/tests/fuzz/$1" -max_total_time="$fuzz_seconds" -rss_limit_mb=4096 \
+    -artifact_prefix="$fuzz_dir/" "${@:2}" >"$log" 2>&1; then
     tail -n 2 "$log"
   else
     cat "$log"

@@ -5,17 +5,27 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <system_error>
 
 #include "common/errors.hpp"
 #include "mesh/import.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  // assimp reads files; one per process, so parallel fuzzing jobs do not share it.
-  static const auto file =
-      std::filesystem::temp_directory_path() / ("rbcsim_fuzz_" + std::to_string(getpid()) + ".stl");
+  // assimp reads files; one per process, so parallel fuzzing jobs do not share it, removed when
+  // the fuzzer exits normally (a crash leaves it, beside libFuzzer's own copy of the input).
+  static const auto file = [] {
+    static const auto path = std::filesystem::temp_directory_path() /
+                             ("rbcsim_fuzz_" + std::to_string(getpid()) + ".stl");
+    std::atexit([] {
+      std::error_code ignored;
+      std::filesystem::remove(path, ignored);
+    });
+    return path;
+  }();
   std::ofstream(file, std::ios::binary | std::ios::trunc)
       .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   try {
