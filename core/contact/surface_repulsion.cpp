@@ -26,7 +26,6 @@ struct Nearest {
   std::uint32_t triangle = 0;
   std::array<double, 3> weights{};
   Vec3 from_surface_um = Vec3::Zero();  // x_i - c
-  Vec3 normal = Vec3::Zero();           // the triangle's outward (unnormalised)
 };
 
 double longest_edge_um(std::span<const Vec3> positions_um, const ContactSurfaces& surfaces,
@@ -42,6 +41,50 @@ double longest_edge_um(std::span<const Vec3> positions_um, const ContactSurfaces
     }
   }
   return longest;
+}
+
+// The side of a surface a point lies on, from its nearest point c on triangle t (barycentric
+// weights w): the sign of (x - c) . N with N the angle-weighted pseudo-normal of the feature c lies
+// on (Baerentzen & Aanaes 2005, IEEE TVCG 11:243): the face's normal inside the face, the sum of
+// the two faces' unit normals on an edge, and the sum of the incident faces' unit normals weighted
+// by their angles at a vertex. One face's normal alone misjudges a point beyond a sharp edge or
+// corner: the tie between the faces that share c keeps the first, whose normal can point away
+// from x. Corners are taken by minimum image around c's first vertex.
+Vec3 pseudo_normal(std::span<const Vec3> positions_um, const ContactSurfaces& surfaces,
+                   const PeriodicBox& box, std::uint32_t t, const std::array<double, 3>& w) {
+  const auto& triangle = surfaces.triangles[t];
+  std::array<std::uint32_t, 3> on{};
+  std::size_t count = 0;
+  for (std::size_t c = 0; c < 3; ++c) {
+    if (w[c] > 0.0) on[count++] = triangle[c];
+  }
+  const Vec3 origin = positions_um[on[0]];
+  const auto corner = [&](std::uint32_t v) {
+    return Vec3(origin + box.minimum_image(positions_um[v] - origin));
+  };
+  const auto unit_normal = [&](std::uint32_t face) {
+    const auto& f = surfaces.triangles[face];
+    const Vec3 a = corner(f[0]);
+    return Vec3((corner(f[1]) - a).cross(corner(f[2]) - a).normalized());
+  };
+  if (count == 3) return unit_normal(t);
+  Vec3 sum = Vec3::Zero();
+  for (std::uint32_t r = surfaces.vertex_triangle_offsets[on[0]];
+       r < surfaces.vertex_triangle_offsets[on[0] + 1]; ++r) {
+    const std::uint32_t face = surfaces.vertex_triangles[r];
+    const auto& f = surfaces.triangles[face];
+    if (count == 2) {
+      if (std::find(f.begin(), f.end(), on[1]) != f.end()) sum += unit_normal(face);
+      continue;
+    }
+    // The face's angle at the vertex.
+    const auto at = static_cast<std::size_t>(std::find(f.begin(), f.end(), on[0]) - f.begin());
+    const Vec3 to_next = corner(f[(at + 1) % 3]) - origin;
+    const Vec3 to_previous = corner(f[(at + 2) % 3]) - origin;
+    const double angle = std::atan2(to_next.cross(to_previous).norm(), to_next.dot(to_previous));
+    sum += angle * unit_normal(face);
+  }
+  return sum;
 }
 
 }  // namespace
@@ -139,8 +182,7 @@ ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
         const double distance = (here - point).norm();
         // Ties (a shared edge or vertex) keep the first triangle met: a fixed order.
         if (distance < entry->second.distance_um) {
-          entry->second = {distance, t, w, here - point,
-                           (corner[1] - corner[0]).cross(corner[2] - corner[0])};
+          entry->second = {distance, t, w, here - point};
         }
       }
     });
@@ -151,10 +193,11 @@ ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
       const double law = parameters.force_at_contact_pN * excess * excess;
       const bool capped = law > parameters.force_cap_pN;
       const double magnitude = capped ? parameters.force_cap_pN : law;
+      const Vec3 outward = pseudo_normal(positions_um, surfaces, box, near.triangle, near.weights);
       Vec3 direction = near.distance_um > 0.0 ? Vec3(near.from_surface_um / near.distance_um)
-                                              : Vec3(near.normal.normalized());
-      // On the inner side of the triangle: already through, pushed back out.
-      if (direction.dot(near.normal) < 0.0) direction = -direction;
+                                              : Vec3(outward.normalized());
+      // On the inner side of the surface: already through, pushed back out.
+      if (direction.dot(outward) < 0.0) direction = -direction;
       found[k].push_back(
           {i, cell, near.triangle, near.weights, magnitude * direction, near.distance_um, capped});
     }

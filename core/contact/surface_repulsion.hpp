@@ -10,7 +10,8 @@
 //
 // For a vertex i and another cell B, c is the nearest point of B's surface to x_i (on triangle t,
 // barycentric weights w), d = |x_i - c|, and n the unit vector from c to x_i, turned to point out
-// of B when x_i lies on the inner side of t (a vertex already through is pushed back out):
+// of B when x_i lies on B's inner side (by the angle-weighted pseudo-normal at c, which is exact
+// for a closed surface also beyond edges and corners): a vertex already through is pushed back out:
 //     F_i = F(d) n,   F_k = -w_k F(d) n on t's three vertices k,
 //     F(d) = F_half (r / d - 1)^2 for d < r: F_half at d = r / 2, 0 with zero slope at the range r,
 //     growing as (r / d)^2 towards contact (a barrier: the lattice's regularised forces on two

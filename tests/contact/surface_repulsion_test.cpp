@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -29,6 +31,19 @@ struct Patches {
   std::size_t per_patch = 0;
 
   ContactSurfaces surfaces() const { return {triangles, offsets, vertex_triangles}; }
+  // Each vertex's triangles (offsets, vertex_triangles) from the triangles.
+  void index_vertex_triangles() {
+    std::vector<std::vector<std::uint32_t>> of_vertex(positions_um.size());
+    for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+      for (const auto v : triangles[t]) of_vertex[v].push_back(t);
+    }
+    offsets.assign(1, 0);
+    vertex_triangles.clear();
+    for (const auto& row : of_vertex) {
+      vertex_triangles.insert(vertex_triangles.end(), row.begin(), row.end());
+      offsets.push_back(static_cast<std::uint32_t>(vertex_triangles.size()));
+    }
+  }
 };
 
 Patches facing_patches(double gap_um, int n = 9) {
@@ -57,15 +72,7 @@ Patches facing_patches(double gap_um, int n = 9) {
       }
     }
   }
-  std::vector<std::vector<std::uint32_t>> of_vertex(p.positions_um.size());
-  for (std::uint32_t t = 0; t < p.triangles.size(); ++t) {
-    for (const auto v : p.triangles[t]) of_vertex[v].push_back(t);
-  }
-  p.offsets.push_back(0);
-  for (const auto& row : of_vertex) {
-    p.vertex_triangles.insert(p.vertex_triangles.end(), row.begin(), row.end());
-    p.offsets.push_back(static_cast<std::uint32_t>(p.vertex_triangles.size()));
-  }
+  p.index_vertex_triangles();
   return p;
 }
 
@@ -181,6 +188,59 @@ TEST(SurfaceContact, AVertexThroughTheSurfaceIsPushedBackOut) {
   EXPECT_LT(surface.forces_pN[middle].z(), 0.0);
   const auto vertex = push_of(patches, ContactLaw::vertex);
   EXPECT_GT(vertex.forces_pN[middle].z(), 0.0);
+}
+
+// Beyond a sharp edge or corner the nearest point is shared by several faces, and a point outside
+// can lie on the inner side of one of them (a regular tetrahedron's faces meet at 109.5 degrees):
+// the side comes from the angle-weighted pseudo-normal, so such a vertex is pushed away from the
+// other cell, never into it, whichever of the faces the search meets first.
+TEST(SurfaceContact, AVertexBeyondAnEdgeOrCornerIsPushedAway) {
+  // Cell 0: a regular tetrahedron (edges 2.8 um), its faces outward.
+  const std::vector<Vec3> corners{Vec3(1, 1, 1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(-1, -1, 1)};
+  const std::vector<std::array<std::uint32_t, 3>> faces{{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
+  const auto outward = [&](std::size_t f) {
+    const auto& t = faces[f];
+    return Vec3((corners[t[1]] - corners[t[0]]).cross(corners[t[2]] - corners[t[0]]).normalized());
+  };
+  // Outward normals: faces 0 and 1 share the edge 0-1; faces 0, 1 and 2 share corner 0.
+  ASSERT_GT(outward(0).dot(Vec3(1, 1, -1)), 0.0);
+  const auto push_at = [&](const Vec3& nearest, const Vec3& away) {
+    Patches p;
+    p.positions_um = corners;
+    // Cell 1: the same tetrahedron, a third the size, turned so that its corner 0 points at
+    // cell 0 from x (its faces still outward).
+    const Vec3 x = nearest + 0.1 * away;
+    const Eigen::Matrix3d turn =
+        Eigen::Quaterniond::FromTwoVectors(corners[0], -away).toRotationMatrix();
+    for (const Vec3& c : corners) p.positions_um.push_back(x + turn * ((c - corners[0]) / 3.0));
+    p.owner = {0, 0, 0, 0, 1, 1, 1, 1};
+    p.triangles = faces;
+    for (const auto& f : faces) p.triangles.push_back({f[0] + 4, f[1] + 4, f[2] + 4});
+    p.index_vertex_triangles();
+    std::vector<Vec3> forces(8, Vec3::Zero());
+    ContactWorkspace workspace;
+    add_surface_contact_forces(p.positions_um, p.owner, p.surfaces(),
+                               {5.0, 0.5, ContactLaw::surface}, {}, forces, workspace);
+    return forces[4];
+  };
+  // The push the law gives at 0.1 um: x's own, at least (at the corner, the corner's push from
+  // x's cell adds its reaction on x, in the same direction).
+  const double push_pN = 5.0 * std::pow(0.5 / 0.1 - 1.0, 2) * (1.0 - 1e-9);
+  const Vec3 edge_middle = 0.5 * (corners[0] + corners[1]);
+  for (const auto& [a, b] : {std::pair{0.1, 0.9}, std::pair{0.9, 0.1}}) {
+    // In the edge's normal cone, so nearest to the edge, but on the inner side of one face.
+    const Vec3 away = (a * outward(0) + b * outward(1)).normalized();
+    ASSERT_LT(std::min(away.dot(outward(0)), away.dot(outward(1))), 0.0);
+    const Vec3 force = push_at(edge_middle, away);
+    EXPECT_GT(force.dot(away), push_pN) << a;
+  }
+  for (const auto& [f, g] : {std::pair{0, 1}, std::pair{1, 2}, std::pair{0, 2}}) {
+    // In corner 0's normal cone, on the inner side of its third face.
+    const Vec3 away =
+        (outward(static_cast<std::size_t>(f)) + outward(static_cast<std::size_t>(g))).normalized();
+    const Vec3 force = push_at(corners[0], away);
+    EXPECT_GT(force.dot(away), push_pN) << f << g;
+  }
 }
 
 TEST(SurfaceContact, ConservesMomentumAndIsThreadCountIndependent) {
