@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <stdexcept>
@@ -62,12 +63,19 @@ Eigen::Quaterniond random_orientation(std::mt19937& generator) {
       std::sqrt(1.0 - u1) * std::cos(two_pi * u2), std::sqrt(u1) * std::sin(two_pi * u3));
 }
 
-Vec3 random_place(std::mt19937& generator, const PackingTube& tube, double clear_radius_um) {
+// A point at axial position x, uniformly random over the disc of the lumen that keeps
+// clear_radius_um from the wall.
+Vec3 random_off_axis(std::mt19937& generator, const PackingTube& tube, double clear_radius_um,
+                     double x) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double x = tube.length_um * unit(generator);
   const double r = std::max(tube.radius_um - clear_radius_um, 0.0) * std::sqrt(unit(generator));
   const double angle = 2.0 * std::numbers::pi * unit(generator);
   return {x, r * std::cos(angle), r * std::sin(angle)};
+}
+
+Vec3 random_place(std::mt19937& generator, const PackingTube& tube, double clear_radius_um) {
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  return random_off_axis(generator, tube, clear_radius_um, tube.length_um * unit(generator));
 }
 
 // The seeded start of PackingOrientation::axial: cell c at slot slots[c] of N along the axis.
@@ -81,20 +89,19 @@ AxialStart axial_start(std::mt19937& generator, const PackingTube& tube, double 
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   const double spacing_um = tube.length_um / static_cast<double>(slots);
   const double x = spacing_um * (static_cast<double>(slot) + 0.5 + 0.5 * (unit(generator) - 0.5));
-  const double r = std::max(tube.radius_um - clear_radius_um, 0.0) * std::sqrt(unit(generator));
-  const double angle = 2.0 * std::numbers::pi * unit(generator);
+  const Vec3 centre_um = random_off_axis(generator, tube, clear_radius_um, x);
   const double spin = 2.0 * std::numbers::pi * unit(generator);
   return {(Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), Vec3::UnitX()) *
            Eigen::Quaterniond(Eigen::AngleAxisd(spin, Vec3::UnitZ())))
               .normalized(),
-          Vec3(x, r * std::cos(angle), r * std::sin(angle))};
+          centre_um};
 }
 
 // A seeded random order of 0 .. count-1 (Fisher-Yates on the generator's uniform numbers, so
 // that the order does not depend on the standard library's shuffle).
 std::vector<std::size_t> random_order(std::mt19937& generator, std::size_t count) {
   std::vector<std::size_t> order(count);
-  for (std::size_t i = 0; i < count; ++i) order[i] = i;
+  std::iota(order.begin(), order.end(), std::size_t{0});
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   for (std::size_t i = count; i > 1; --i) {
     const auto j =
