@@ -142,7 +142,7 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
   std::vector<std::string> import_notices;
   const auto morphologies =
       setup::suspension_morphologies_from(request, mix, compression.factor, &import_notices);
-  for (const auto& notice : import_notices) std::cerr << "rbcsim: notice: " << notice << '\n';
+  print_notices(import_notices);
   const auto cells =
       settings.placed_cells.empty()
           ? cells_of(morphologies, mix, settings, config.number("suspension.hematocrit"))

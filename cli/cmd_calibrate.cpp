@@ -160,7 +160,7 @@ void run_calibrate_command(const CalibrateOptions& options) {
   const auto parameters = setup::membrane_parameters_from(config);
   auto cell_mesh = setup::cell_mesh_from(config);
   setup::add_resolution_notice(cell_mesh, config);
-  for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
+  print_notices(cell_mesh.notices);
 
   // One thread whatever --threads says: the patches have 8 vertices and the cell mode is a few
   // force evaluations, so OpenMP barriers cost more than the work (on the loaded 2-core machine:

@@ -277,7 +277,7 @@ void run_capillary_command(const CapillaryOptions& options) {
   auto cell_mesh = setup::cell_mesh_from(config);
   setup::add_resolution_notice(cell_mesh, config);
   setup::add_edge_spacing_notice(cell_mesh, config.number("lattice.spacing_um"));
-  for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
+  print_notices(cell_mesh.notices);
   const int count = config.integer("capillary.orientations");
   const auto seed = static_cast<std::uint64_t>(config.integer("capillary.orientation_seed"));
   const auto orientations = cases::release_orientations(count, seed);

@@ -129,7 +129,7 @@ void run_import(const ImportCommandOptions& options, const CLI::App& command) {
   import_options.center = options.center;
   import_options.align = options.align;
   const auto imported = mesh::import_mesh(options.input, import_options);
-  for (const auto& notice : imported.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
+  print_notices(imported.notices);
   if (!options.output.empty()) mesh::write_mesh_file(options.output, imported.mesh);
   nlohmann::ordered_json header = {{"input", options.input}};
   if (!options.output.empty()) header["output"] = options.output;
@@ -138,7 +138,7 @@ void run_import(const ImportCommandOptions& options, const CLI::App& command) {
 
 void run_info(const InfoOptions& options) {
   const auto imported = mesh::import_mesh(options.input);
-  for (const auto& notice : imported.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
+  print_notices(imported.notices);
   print_report(mesh::inspect_mesh(imported.mesh), options.json, {{"input", options.input}});
 }
 

@@ -221,7 +221,7 @@ void run_shear_command(const ShearOptions& options) {
   auto cell_mesh = setup::cell_mesh_from(config);
   setup::add_resolution_notice(cell_mesh, config);
   setup::add_edge_spacing_notice(cell_mesh, config.number("lattice.spacing_um"));
-  for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
+  print_notices(cell_mesh.notices);
   const auto cell = cases::in_shear_frame(cell_mesh.mesh);
   const membrane::MembraneModel model(cell, parameters);
 

@@ -178,7 +178,7 @@ void run_stretch_command(const StretchOptions& options) {
   setup::add_resolution_notice(cell_mesh, config);
   if (settings.mode == "fluid")
     setup::add_edge_spacing_notice(cell_mesh, config.number("lattice.spacing_um"));
-  for (const auto& notice : cell_mesh.notices) std::cerr << "rbcsim: notice: " << notice << '\n';
+  print_notices(cell_mesh.notices);
   const auto cell = cases::prepare_stretch_cell(cell_mesh.mesh, settings.contact);
   const membrane::MembraneModel model(cell.mesh, parameters);
   setup::require_cell_fits_stretch_box(cell.mesh, settings);

@@ -1,5 +1,6 @@
 #include "common_options.hpp"
 
+#include <iostream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -158,6 +159,10 @@ void add_checkpoint_options(CLI::App* command, CheckpointOptions& options, Commo
 
 config::Config resolve_config(const CommonOptions& options) {
   return config::resolve_config(options.config);
+}
+
+void print_notices(std::span<const std::string> notices) {
+  for (const auto& notice : notices) std::cerr << "rbcsim: notice: " << notice << '\n';
 }
 
 }  // namespace rbcsim::cli

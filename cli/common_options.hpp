@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -16,7 +17,7 @@
 namespace rbcsim::cli {
 
 struct CommonOptions {
-  config::ConfigRequest config;  // --config, --set (repeatable), --morphology, --preset
+  config::ConfigRequest config;            // --config, --set (repeatable), --morphology, --preset
   std::filesystem::path output_directory;  // --output; empty: the subcommand's default
   int threads = 0;                         // --threads; 0: OpenMP's default (all cores)
   bool json = false;                       // --json: machine-readable result on stdout
@@ -70,5 +71,8 @@ void assign_option(config::ConfigRequest& request, std::string_view option, std:
 
 // config::resolve_config of the options given; throws InputError (exit 2) on bad input.
 config::Config resolve_config(const CommonOptions& options);
+
+// Notices (import repairs, run notices) on stderr, one "rbcsim: notice: " line each.
+void print_notices(std::span<const std::string> notices);
 
 }  // namespace rbcsim::cli

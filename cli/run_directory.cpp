@@ -10,6 +10,7 @@
 
 #include "common/errors.hpp"
 #include "common/wall_clock.hpp"
+#include "common_options.hpp"
 #include "config/config_sources.hpp"
 #include "coupling/checkpoint.hpp"
 #include "io/atomic_file.hpp"
@@ -89,7 +90,7 @@ void RunDirectory::start(const config::Config& config, const setup::CellMesh& ce
   io::write_text_atomically(
       path_ / "config.json",
       content.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
-  for (const auto& notice : cell.run_notices) std::cerr << "rbcsim: notice: " << notice << '\n';
+  print_notices(cell.run_notices);
 }
 
 nlohmann::ordered_json RunDirectory::result_head(bool ok) const {
