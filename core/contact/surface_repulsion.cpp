@@ -148,61 +148,75 @@ ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
   list.build(workspace.candidate_positions_um, reach, box, kept_owner);
 
   const auto count = static_cast<std::ptrdiff_t>(kept.size());
+  const double reach_squared = reach * reach;
   std::vector<std::vector<SurfaceContact>> found(kept.size());
-#pragma omp parallel for schedule(dynamic, 64)
-  for (std::ptrdiff_t signed_k = 0; signed_k < count; ++signed_k) {
-    const auto k = static_cast<std::size_t>(signed_k);
-    const std::uint32_t i = kept[k];
-    const Vec3& x = positions_um[i];
-    // Per other cell (in order of first meeting), its nearest surface point.
-    std::vector<std::pair<std::uint32_t, Nearest>> nearest;
-    list.for_each_candidate(workspace.candidate_positions_um[k], [&](std::uint32_t m) {
-      const std::uint32_t cell = kept_owner[m];
-      if (cell == owner[i]) return;
-      const std::uint32_t j = kept[m];
-      auto entry = std::find_if(nearest.begin(), nearest.end(),
-                                [cell](const auto& e) { return e.first == cell; });
-      if (entry == nearest.end()) {
-        nearest.push_back({cell, Nearest{}});
-        entry = nearest.end() - 1;
-      }
-      // x_i placed next to x_j: the triangles are taken around x_j's own position.
-      const Vec3 here = positions_um[j] + box.minimum_image(x - positions_um[j]);
-      for (std::uint32_t r = surfaces.vertex_triangle_offsets[j];
-           r < surfaces.vertex_triangle_offsets[j + 1]; ++r) {
-        const std::uint32_t t = surfaces.vertex_triangles[r];
-        const auto& triangle = surfaces.triangles[t];
-        std::array<Vec3, 3> corner;
-        for (std::size_t c = 0; c < 3; ++c) {
-          corner[c] =
-              positions_um[j] + box.minimum_image(positions_um[triangle[c]] - positions_um[j]);
+#pragma omp parallel
+  {
+    // Which vertex last tried each triangle: a triangle is met once from each of its vertices in
+    // reach, and only the first meeting can be the nearest (ties keep the first), so the others
+    // are skipped without changing the result.
+    std::vector<std::size_t> tried_by(surfaces.triangles.size(), kept.size());
+#pragma omp for schedule(dynamic, 64)
+    for (std::ptrdiff_t signed_k = 0; signed_k < count; ++signed_k) {
+      const auto k = static_cast<std::size_t>(signed_k);
+      const std::uint32_t i = kept[k];
+      const Vec3& x = positions_um[i];
+      // Per other cell (in order of first meeting), its nearest surface point.
+      std::vector<std::pair<std::uint32_t, Nearest>> nearest;
+      list.for_each_candidate(workspace.candidate_positions_um[k], [&](std::uint32_t m) {
+        const std::uint32_t cell = kept_owner[m];
+        if (cell == owner[i]) return;
+        const std::uint32_t j = kept[m];
+        // x_i placed next to x_j: the triangles are taken around x_j's own position. A vertex
+        // beyond the reach has no triangle within the range that another vertex in reach lacks.
+        const Vec3 offset = box.minimum_image(x - positions_um[j]);
+        if (!(offset.squaredNorm() < reach_squared)) return;
+        auto entry = std::find_if(nearest.begin(), nearest.end(),
+                                  [cell](const auto& e) { return e.first == cell; });
+        if (entry == nearest.end()) {
+          nearest.push_back({cell, Nearest{}});
+          entry = nearest.end() - 1;
         }
-        const auto w = nearest_on_triangle(here, corner[0], corner[1], corner[2]);
-        const Vec3 point = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
-        const double distance = (here - point).norm();
-        // Ties (a shared edge or vertex) keep the first triangle met: a fixed order.
-        if (distance < entry->second.distance_um) {
-          entry->second = {distance, t, w, here - point};
+        const Vec3 here = positions_um[j] + offset;
+        for (std::uint32_t r = surfaces.vertex_triangle_offsets[j];
+             r < surfaces.vertex_triangle_offsets[j + 1]; ++r) {
+          const std::uint32_t t = surfaces.vertex_triangles[r];
+          if (tried_by[t] == k) continue;
+          tried_by[t] = k;
+          const auto& triangle = surfaces.triangles[t];
+          std::array<Vec3, 3> corner;
+          for (std::size_t c = 0; c < 3; ++c) {
+            corner[c] =
+                positions_um[j] + box.minimum_image(positions_um[triangle[c]] - positions_um[j]);
+          }
+          const auto w = nearest_on_triangle(here, corner[0], corner[1], corner[2]);
+          const Vec3 point = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
+          const double distance = (here - point).norm();
+          // Ties (a shared edge or vertex) keep the first triangle met: a fixed order.
+          if (distance < entry->second.distance_um) {
+            entry->second = {distance, t, w, here - point};
+          }
         }
+      });
+      for (const auto& [cell, near] : nearest) {
+        if (!(near.distance_um < range)) continue;
+        const double d = std::max(near.distance_um, 0.01 * range);
+        const double excess = range / d - 1.0;
+        const double law = parameters.force_at_contact_pN * excess * excess;
+        const bool capped = law > parameters.force_cap_pN;
+        const double magnitude = capped ? parameters.force_cap_pN : law;
+        const Vec3 outward =
+            pseudo_normal(positions_um, surfaces, box, near.triangle, near.weights);
+        Vec3 direction = near.distance_um > 0.0 ? Vec3(near.from_surface_um / near.distance_um)
+                                                : Vec3(outward.normalized());
+        // On the inner side of the surface: already through, pushed back out.
+        if (direction.dot(outward) < 0.0) direction = -direction;
+        found[k].push_back({i, cell, near.triangle, near.weights, magnitude * direction,
+                            near.distance_um, capped});
       }
-    });
-    for (const auto& [cell, near] : nearest) {
-      if (!(near.distance_um < range)) continue;
-      const double d = std::max(near.distance_um, 0.01 * range);
-      const double excess = range / d - 1.0;
-      const double law = parameters.force_at_contact_pN * excess * excess;
-      const bool capped = law > parameters.force_cap_pN;
-      const double magnitude = capped ? parameters.force_cap_pN : law;
-      const Vec3 outward = pseudo_normal(positions_um, surfaces, box, near.triangle, near.weights);
-      Vec3 direction = near.distance_um > 0.0 ? Vec3(near.from_surface_um / near.distance_um)
-                                              : Vec3(outward.normalized());
-      // On the inner side of the surface: already through, pushed back out.
-      if (direction.dot(outward) < 0.0) direction = -direction;
-      found[k].push_back(
-          {i, cell, near.triangle, near.weights, magnitude * direction, near.distance_um, capped});
+      std::sort(found[k].begin(), found[k].end(),
+                [](const auto& a, const auto& b) { return a.other_cell < b.other_cell; });
     }
-    std::sort(found[k].begin(), found[k].end(),
-              [](const auto& a, const auto& b) { return a.other_cell < b.other_cell; });
   }
   // Serially, in the order of (vertex, other cell): each vertex's push and its reaction on the
   // other surface's triangle.

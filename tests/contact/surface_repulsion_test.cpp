@@ -243,12 +243,61 @@ TEST(SurfaceContact, AVertexBeyondAnEdgeOrCornerIsPushedAway) {
   }
 }
 
-TEST(SurfaceContact, ConservesMomentumAndIsThreadCountIndependent) {
-  auto patches = facing_patches(0.07, 12);
-  std::mt19937 generator(3);
-  std::uniform_real_distribution<double> wobble(-0.03, 0.03);
+// Facing 12 x 12 patches `gap_um` apart, every vertex moved by up to `wobble_um` along each axis.
+Patches wobbled_patches(double gap_um, double wobble_um, unsigned seed) {
+  auto patches = facing_patches(gap_um, 12);
+  std::mt19937 generator(seed);
+  std::uniform_real_distribution<double> wobble(-wobble_um, wobble_um);
   for (Vec3& p : patches.positions_um)
     p += Vec3(wobble(generator), wobble(generator), wobble(generator));
+  return patches;
+}
+
+// The plain reference of the law: each vertex against every triangle of the other patch, no cell
+// list, no reach. Valid while no vertex is through the other patch (the push then points from the
+// nearest point to the vertex).
+std::vector<Vec3> brute_force_surface_forces(const Patches& p, const ContactParameters& law) {
+  std::vector<Vec3> forces(p.positions_um.size(), Vec3::Zero());
+  for (std::size_t i = 0; i < p.positions_um.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    std::size_t nearest_triangle = 0;
+    std::array<double, 3> nearest_weights{};
+    for (std::size_t t = 0; t < p.triangles.size(); ++t) {
+      const auto& tri = p.triangles[t];
+      if (p.owner[tri[0]] == p.owner[i]) continue;
+      const auto w = nearest_on_triangle(p.positions_um[i], p.positions_um[tri[0]],
+                                         p.positions_um[tri[1]], p.positions_um[tri[2]]);
+      const Vec3 c = w[0] * p.positions_um[tri[0]] + w[1] * p.positions_um[tri[1]] +
+                     w[2] * p.positions_um[tri[2]];
+      const double d = (p.positions_um[i] - c).norm();
+      if (d < nearest) nearest = d, nearest_triangle = t, nearest_weights = w;
+    }
+    if (!(nearest < law.range_um)) continue;
+    const auto& tri = p.triangles[nearest_triangle];
+    const Vec3 c = nearest_weights[0] * p.positions_um[tri[0]] +
+                   nearest_weights[1] * p.positions_um[tri[1]] +
+                   nearest_weights[2] * p.positions_um[tri[2]];
+    const double excess = law.range_um / nearest - 1.0;
+    const Vec3 push = law.force_at_contact_pN * excess * excess * (p.positions_um[i] - c) / nearest;
+    forces[i] += push;
+    for (std::size_t k = 0; k < 3; ++k) forces[tri[k]] -= nearest_weights[k] * push;
+  }
+  return forces;
+}
+
+TEST(SurfaceContact, EqualsThePlainSumOverEveryTriangle) {
+  const auto patches = wobbled_patches(0.3, 0.08, 5);
+  const auto push = push_of(patches, ContactLaw::surface);
+  const auto expected = brute_force_surface_forces(patches, {5.0, 0.75, ContactLaw::surface});
+  ASSERT_GT(push.statistics.pairs_in_range, 100u);
+  for (std::size_t v = 0; v < expected.size(); ++v) {
+    EXPECT_LT((push.forces_pN[v] - expected[v]).norm(), 1e-9 * (1.0 + expected[v].norm()))
+        << "vertex " << v;
+  }
+}
+
+TEST(SurfaceContact, ConservesMomentumAndIsThreadCountIndependent) {
+  const auto patches = wobbled_patches(0.07, 0.03, 3);
   std::vector<std::vector<Vec3>> forces;
   for (const int threads : {1, 2}) {
     const ThreadCountScope scope(threads);
