@@ -42,7 +42,7 @@ void Cell::compute_membrane_forces(const LatticeFrame& frame, membrane::ForceDet
   for (std::size_t v = 0; v < positions_lu_.size(); ++v) {
     positions_um_[v] = frame.to_um(positions_lu_[v]);
   }
-  // No velocities: the membrane's friction acts through apply_membrane_friction, not through
+  // No velocities: the membrane's friction acts through solve_membrane_friction, not through
   // the force spread.
   model_.compute(positions_um_, workspace_, membrane_forces_, detail);
   for (Vec3& force : external_forces_pN_) force.setZero();
@@ -82,7 +82,7 @@ bool Cell::has_membrane_friction() const {
   return friction.central_pN_s_per_um > 0.0 || friction.tangential_pN_s_per_um > 0.0;
 }
 
-void Cell::apply_membrane_friction(lattice::FluidSolver& fluid, const LatticeFrame& frame,
+void Cell::solve_membrane_friction(const lattice::FluidSolver& fluid, const LatticeFrame& frame,
                                    std::size_t time_step) {
   if (!has_membrane_friction() || !fluid.populations_natural()) return;
   // The friction in lattice force per lattice velocity: gamma pN/(um/s) times (dx/dt um/s per
@@ -95,20 +95,26 @@ void Cell::apply_membrane_friction(lattice::FluidSolver& fluid, const LatticeFra
   // Every step the populations are natural (reference kernel), every second step otherwise
   // (the optimised kernel's AA pattern): each step covers the steps since the previous one.
   const auto dt_steps = static_cast<double>(time_step - last_friction_step_);
-  friction_iterations_ = friction_.apply(stencil_, positions_lu_,
-                                         membrane::EdgeNetwork::of(model_.topology()), friction_lu,
-                                         dt_steps, fluid, membrane_velocities_lu_);
+  friction_iterations_ =
+      friction_.solve(stencil_, positions_lu_, membrane::EdgeNetwork::of(model_.topology()),
+                      friction_lu, dt_steps, fluid, membrane_velocities_lu_);
   last_friction_step_ = time_step;
   friction_applied_ = true;
 }
 
-void Cell::interpolate_and_advance(const ibm::GridView& grid, const lattice::VectorField& velocity) {
+void Cell::add_membrane_friction(lattice::FluidSolver& fluid) const {
+  if (friction_applied_) friction_.add_momentum_to(fluid);
+}
+
+void Cell::interpolate_and_advance(const ibm::GridView& grid,
+                                   const lattice::VectorField& velocity) {
   ibm::interpolate_velocity(stencil_, grid, velocity[0].data(), velocity[1].data(),
                             velocity[2].data(), velocities_lu_);
   // After an implicit friction step the membrane moves as that step found it (the friction acted
   // on the fluid's state after streaming, which the latest collision's velocity precedes).
   if (friction_applied_) {
-    std::copy(membrane_velocities_lu_.begin(), membrane_velocities_lu_.end(), velocities_lu_.begin());
+    std::copy(membrane_velocities_lu_.begin(), membrane_velocities_lu_.end(),
+              velocities_lu_.begin());
     friction_applied_ = false;
   }
   previous_positions_lu_ = positions_lu_;

@@ -87,11 +87,14 @@ class Cell {
   ibm::SpreadSource spread_source() const { return {&stencil_, forces_lu_}; }
   // After the fluid step, with membrane viscosity and the fluid's populations in natural layout:
   // the implicit friction step on the fluid under the membrane (membrane_friction.hpp), over the
-  // steps since the previous one; `time_step` counts the steps completed. Throws RuntimeFailure
-  // when its solve does not converge.
+  // steps since the previous one; `time_step` counts the steps completed. In two halves: the
+  // solve only reads the fluid (cells solve in parallel), then its momentum is added (cell after
+  // cell). Both do nothing without membrane viscosity or with the populations swapped. Throws
+  // RuntimeFailure when the solve does not converge.
   bool has_membrane_friction() const;
-  void apply_membrane_friction(lattice::FluidSolver& fluid, const LatticeFrame& frame,
+  void solve_membrane_friction(const lattice::FluidSolver& fluid, const LatticeFrame& frame,
                                std::size_t time_step);
+  void add_membrane_friction(lattice::FluidSolver& fluid) const;
   // Phases 4-5: interpolates `velocity` with the same stencil, then moves the vertices (dt = 1).
   void interpolate_and_advance(const ibm::GridView& grid, const lattice::VectorField& velocity);
 
@@ -112,7 +115,7 @@ class Cell {
   std::vector<Vec3> total_forces_pN_;
   std::vector<Vec3> forces_lu_;
   std::vector<Vec3> velocities_lu_;
-  // With membrane viscosity (apply_membrane_friction).
+  // With membrane viscosity (solve_membrane_friction, add_membrane_friction).
   ImplicitMembraneFriction friction_;
   std::vector<Vec3> membrane_velocities_lu_;
   std::size_t last_friction_step_ = 0;

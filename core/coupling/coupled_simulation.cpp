@@ -254,14 +254,16 @@ void CoupledSimulation::advance_fluid() {
   }
 }
 
+// Every cell solves on the same fluid state, in parallel, then their momenta are added in cell
+// order: independent of the thread count. Cells whose stencils share nodes meet each other's
+// friction a step later than in a solve of all cells together, as their forces meet (first order
+// in the step, like the explicit coupling itself).
 void CoupledSimulation::apply_membrane_friction() {
-  for (std::size_t k = 0; k < cells_.size(); ++k) {
-    try {
-      cells_[k].apply_membrane_friction(*fluid_, frame_, time_step_ + 1);
-    } catch (const RuntimeFailure& failure) {
-      fail(k, failure.what());
-    }
-  }
+  const lattice::FluidSolver& fluid = *fluid_;
+  for_each_cell([this, &fluid](std::size_t k) {
+    cells_[k].solve_membrane_friction(fluid, frame_, time_step_ + 1);
+  });
+  for (const Cell& cell : cells_) cell.add_membrane_friction(*fluid_);
 }
 
 void CoupledSimulation::advance_cells() {

@@ -45,6 +45,23 @@ std::size_t ImplicitMembraneFriction::apply(const ibm::InterpolationStencil& ste
                                             double dt_steps, lattice::FluidSolver& fluid,
                                             std::span<Vec3> membrane_velocities_lu,
                                             const ImplicitFrictionSettings& settings) {
+  const std::size_t iterations = solve(stencil, positions_lu, network, friction_lu, dt_steps, fluid,
+                                       membrane_velocities_lu, settings);
+  add_momentum_to(fluid);
+  return iterations;
+}
+
+void ImplicitMembraneFriction::add_momentum_to(lattice::FluidSolver& fluid) const {
+  fluid.add_momentum(nodes_, momentum_);
+}
+
+std::size_t ImplicitMembraneFriction::solve(const ibm::InterpolationStencil& stencil,
+                                            std::span<const Vec3> positions_lu,
+                                            const membrane::EdgeNetwork& network,
+                                            const membrane::EdgeFrictionParameters& friction_lu,
+                                            double dt_steps, const lattice::FluidSolver& fluid,
+                                            std::span<Vec3> membrane_velocities_lu,
+                                            const ImplicitFrictionSettings& settings) {
   gather_nodes(stencil);
   const std::size_t node_count = nodes_.size();
   const std::size_t vertex_count = stencil.point_count();
@@ -151,10 +168,9 @@ std::size_t ImplicitMembraneFriction::apply(const ibm::InterpolationStencil& ste
   interpolate(velocity, membrane_velocities_lu);
   std::fill(resistance.begin(), resistance.end(), Vec3::Zero());
   membrane::add_friction_resistance(axes, membrane_velocities_lu, network, friction_lu, resistance);
-  std::vector<Vec3> momentum(node_count);
-  spread(resistance, momentum);
-  for (auto& value : momentum) value *= -dt_steps;
-  fluid.add_momentum(nodes_, momentum);
+  momentum_.resize(node_count);
+  spread(resistance, momentum_);
+  for (auto& value : momentum_) value *= -dt_steps;
   return iterations;
 }
 

@@ -32,16 +32,25 @@ struct ImplicitFrictionSettings {
 
 class ImplicitMembraneFriction {
  public:
-  // One step over `dt_steps` lattice steps: solves for u' on the stencil's nodes, adds
-  // rho (u' - u) to the fluid (FluidSolver::add_momentum; its populations must be in natural
-  // layout) and writes S u' into `membrane_velocities_lu`. `friction_lu` in lattice force per
-  // lattice velocity. Returns the iterations; throws RuntimeFailure when max_iterations do not
-  // reach the tolerance.
+  // One step over `dt_steps` lattice steps: solve, then add_momentum_to.
   std::size_t apply(const ibm::InterpolationStencil& stencil, std::span<const Vec3> positions_lu,
                     const membrane::EdgeNetwork& network,
                     const membrane::EdgeFrictionParameters& friction_lu, double dt_steps,
                     lattice::FluidSolver& fluid, std::span<Vec3> membrane_velocities_lu,
                     const ImplicitFrictionSettings& settings = {});
+
+  // Solves for u' on the stencil's nodes of `fluid` (its populations in natural layout), writes
+  // S u' into `membrane_velocities_lu` and keeps the momentum the step exchanges with those nodes;
+  // the fluid is only read, so the cells of a suspension solve in parallel on one fluid state.
+  // `friction_lu` in lattice force per lattice velocity. Returns the iterations; throws
+  // RuntimeFailure when max_iterations do not reach the tolerance.
+  std::size_t solve(const ibm::InterpolationStencil& stencil, std::span<const Vec3> positions_lu,
+                    const membrane::EdgeNetwork& network,
+                    const membrane::EdgeFrictionParameters& friction_lu, double dt_steps,
+                    const lattice::FluidSolver& fluid, std::span<Vec3> membrane_velocities_lu,
+                    const ImplicitFrictionSettings& settings = {});
+  // Adds the latest solve's momentum to `fluid` (FluidSolver::add_momentum).
+  void add_momentum_to(lattice::FluidSolver& fluid) const;
 
  private:
   void gather_nodes(const ibm::InterpolationStencil& stencil);
@@ -50,6 +59,7 @@ class ImplicitMembraneFriction {
   std::vector<std::size_t> nodes_;
   std::vector<std::size_t> slot_node_;
   std::vector<std::size_t> slot_offsets_;  // vertex v's slots: [v], [v + 1]
+  std::vector<Vec3> momentum_;             // per node of nodes_: the latest solve's exchange
 };
 
 }  // namespace rbcsim::coupling

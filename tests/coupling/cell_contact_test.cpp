@@ -132,35 +132,48 @@ TEST(CellContact, SurfaceLawInTheCoupledStep) {
   EXPECT_EQ(positions[0], positions[1]);
 }
 
-TEST(CellContact, MoreCellsThanThreadsGiveTheSameRunOnOneAndTwoThreads) {
-  // Seven small capsules in a row along x, alternately above and below y = 5 um, neighbours
-  // 0.4 um apart (within the range), driven alternately along +x and -x: the step's loop over
-  // cells hands them to the threads in a varying order.
-  std::vector<std::vector<Vec3>> positions;
-  for (const int threads : {1, 2}) {
-    const ThreadCountScope scope(threads);
-    auto simulation = std::make_unique<CoupledSimulation>(periodic_fluid(48, 20, 16),
-                                                          plasma_units(), CouplingParameters{});
-    for (int c = 0; c < 7; ++c) {
-      const auto sphere = sphere_mesh(3, 1.4, Vec3(2.0 + 3.0 * c, 5.0 + (c % 2 ? 0.8 : -0.8), 4.0));
-      simulation->add_cell(membrane::MembraneModel(sphere, capsule_parameters(300.0)),
-                           sphere.positions_um);
-    }
-    simulation->add_external_force([](std::size_t cell, const Cell&, std::span<Vec3> forces_pN) {
-      const double direction = cell % 2 == 0 ? 1.0 : -1.0;
-      for (Vec3& force : forces_pN) force.x() += direction * kPushPerVertexPN;
-    });
-    simulation->set_cell_contact(kContact, "test");
-    for (int step = 0; step < 300; ++step) simulation->step();
-    EXPECT_GT(simulation->contact_statistics().pairs_in_range, 0u);
-    std::vector<Vec3> all;
-    for (std::size_t c = 0; c < 7; ++c) {
-      const auto cell = simulation->positions_now_um(c);
-      all.insert(all.end(), cell.begin(), cell.end());
-    }
-    positions.push_back(all);
+// Seven small capsules in a row along x, alternately above and below y = 5 um, neighbours 0.4 um
+// apart (within the range, their stencils sharing nodes), driven alternately along +x and -x,
+// after `steps` steps on `threads` threads: the step's loop over cells hands them to the threads in
+// a varying order. `viscous`: with membrane viscosity, whose friction solves run in parallel over
+// the cells on one fluid state.
+std::vector<Vec3> seven_capsules_after(int steps, int threads, bool viscous) {
+  const ThreadCountScope scope(threads);
+  auto simulation = std::make_unique<CoupledSimulation>(periodic_fluid(48, 20, 16), plasma_units(),
+                                                        CouplingParameters{});
+  auto parameters = capsule_parameters(300.0);
+  if (viscous) parameters.forces.push_back("viscosity");
+  for (int c = 0; c < 7; ++c) {
+    const auto sphere = sphere_mesh(3, 1.4, Vec3(2.0 + 3.0 * c, 5.0 + (c % 2 ? 0.8 : -0.8), 4.0));
+    simulation->add_cell(membrane::MembraneModel(sphere, parameters), sphere.positions_um);
   }
-  EXPECT_EQ(positions[0], positions[1]);
+  simulation->add_external_force([](std::size_t cell, const Cell&, std::span<Vec3> forces_pN) {
+    const double direction = cell % 2 == 0 ? 1.0 : -1.0;
+    for (Vec3& force : forces_pN) force.x() += direction * kPushPerVertexPN;
+  });
+  simulation->set_cell_contact(kContact, "test");
+  for (int step = 0; step < steps; ++step) simulation->step();
+  EXPECT_GT(simulation->contact_statistics().pairs_in_range, 0u);
+  if (viscous) {
+    EXPECT_GT(simulation->cell(3).friction_iterations(), 0u);
+  }
+  std::vector<Vec3> all;
+  for (std::size_t c = 0; c < 7; ++c) {
+    const auto cell = simulation->positions_now_um(c);
+    all.insert(all.end(), cell.begin(), cell.end());
+  }
+  return all;
+}
+
+TEST(CellContact, MoreCellsThanThreadsGiveTheSameRunOnOneAndTwoThreads) {
+  EXPECT_EQ(seven_capsules_after(300, 1, false), seven_capsules_after(300, 2, false));
+}
+
+TEST(CellContact, MoreCellsThanThreadsWithMembraneViscosityGiveTheSameRunOnOneAndTwoThreads) {
+  // 60 steps: 30 friction solves (every second step with the optimised kernel).
+  const auto one = seven_capsules_after(60, 1, true);
+  EXPECT_EQ(one, seven_capsules_after(60, 2, true));
+  EXPECT_NE(one, seven_capsules_after(60, 1, false));  // the friction acted
 }
 
 }  // namespace
