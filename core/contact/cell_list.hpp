@@ -77,6 +77,16 @@ class CellList {
       for (const std::uint32_t j : bin(neighbours.bins[n])) visit(j);
     }
   }
+  // The same points run by run: visit(run, shift_um) for every run of one group in those bins,
+  // with the shift of its bin (Neighbours::shift_um: the wrapped(j) of the run's points plus
+  // shift_um lie next to the bin of `point_um`), so a caller can skip a group whole.
+  template <class Visit>
+  void for_each_candidate_run(const Vec3& point_um, const Visit& visit) const {
+    const auto neighbours = neighbours_of_coordinates(bin_coordinates(point_um));
+    for (std::size_t n = 0; n < neighbours.count; ++n) {
+      for (const Run& run : runs(neighbours.bins[n])) visit(run, neighbours.shift_um[n]);
+    }
+  }
 
  private:
   // The bin coordinates of `point_um`, wrapped along a periodic axis and clamped to the bins

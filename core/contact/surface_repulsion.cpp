@@ -28,19 +28,20 @@ struct Nearest {
   Vec3 from_surface_um = Vec3::Zero();  // x_i - c
 };
 
-double longest_edge_um(std::span<const Vec3> positions_um, const ContactSurfaces& surfaces,
-                       const PeriodicBox& box) {
-  double longest = 0.0;
+// The longest edge, from the positions as they are: a cell's vertices travel together (never
+// wrapped one by one), so an edge needs no minimum image; were one wrapped, its edge would come
+// out a period long and the search only wider, never missing a triangle. Squared lengths, one
+// root: this runs over every triangle each step.
+double longest_edge_um(std::span<const Vec3> positions_um, const ContactSurfaces& surfaces) {
+  double longest_squared = 0.0;
   for (const auto& t : surfaces.triangles) {
-    for (int e = 0; e < 3; ++e) {
-      const double length =
-          box.minimum_image(positions_um[t[static_cast<std::size_t>(e)]] -
-                            positions_um[t[static_cast<std::size_t>((e + 1) % 3)]])
-              .norm();
-      longest = std::max(longest, length);
-    }
+    const Vec3& a = positions_um[t[0]];
+    const Vec3& b = positions_um[t[1]];
+    const Vec3& c = positions_um[t[2]];
+    longest_squared = std::max(
+        {longest_squared, (a - b).squaredNorm(), (b - c).squaredNorm(), (c - a).squaredNorm()});
   }
-  return longest;
+  return std::sqrt(longest_squared);
 }
 
 // The side of a surface a point lies on, from its nearest point c on triangle t (barycentric
@@ -86,6 +87,77 @@ Vec3 pseudo_normal(std::span<const Vec3> positions_um, const ContactSurfaces& su
   }
   return sum;
 }
+
+// For candidate k of the workspace (vertex i = candidates[k]), the nearest point of each other
+// cell's surface among the triangles of that cell's vertices within the reach: the cell list's
+// runs of one cell are taken or skipped whole, and the separations come from the list's wrapped
+// positions and shifts (no rounding per pair where they are exact).
+struct NearestSurfaceSearch {
+  std::span<const Vec3> positions_um;
+  std::span<const std::uint32_t> owner;
+  const ContactSurfaces& surfaces;
+  const PeriodicBox& box;
+  const ContactWorkspace& workspace;
+  double reach_squared;
+
+  // `tried_by[t] == k` marks triangle t as tried for this vertex: a triangle is met once from
+  // each of its vertices in reach, and only the first meeting can be the nearest (ties keep the
+  // first), so the others are skipped without changing the result.
+  void find(std::size_t k, std::span<std::size_t> tried_by,
+            std::vector<std::pair<std::uint32_t, Nearest>>& nearest) const {
+    const CellList& list = workspace.list;
+    const std::uint32_t i = workspace.candidates[k];
+    const Vec3& x_wrapped = list.wrapped(k);
+    list.for_each_candidate_run(
+        workspace.candidate_positions_um[k], [&](const CellList::Run& run, const Vec3& shift_um) {
+          if (run.group == owner[i]) return;
+          Nearest* entry = nullptr;
+          for (std::uint32_t p = run.begin; p < run.end; ++p) {
+            const std::uint32_t m = list.points()[p];
+            const std::uint32_t j = workspace.candidates[m];
+            // x_i placed next to x_j. A vertex beyond the reach has no triangle within the range
+            // that another vertex in reach lacks.
+            const Vec3 offset = list.has_exact_shifts()
+                                    ? Vec3(x_wrapped - (list.wrapped(m) + shift_um))
+                                    : box.minimum_image(positions_um[i] - positions_um[j]);
+            if (!(offset.squaredNorm() < reach_squared)) continue;
+            if (entry == nullptr) entry = &entry_of(nearest, run.group);
+            try_triangles_of(j, positions_um[j] + offset, k, tried_by, *entry);
+          }
+        });
+  }
+
+  static Nearest& entry_of(std::vector<std::pair<std::uint32_t, Nearest>>& nearest,
+                           std::uint32_t cell) {
+    auto entry = std::find_if(nearest.begin(), nearest.end(),
+                              [cell](const auto& e) { return e.first == cell; });
+    if (entry != nearest.end()) return entry->second;
+    nearest.push_back({cell, Nearest{}});
+    return nearest.back().second;
+  }
+
+  // The triangles of vertex j not yet tried, taken around x_j's own position.
+  void try_triangles_of(std::uint32_t j, const Vec3& here, std::size_t k,
+                        std::span<std::size_t> tried_by, Nearest& entry) const {
+    for (std::uint32_t r = surfaces.vertex_triangle_offsets[j];
+         r < surfaces.vertex_triangle_offsets[j + 1]; ++r) {
+      const std::uint32_t t = surfaces.vertex_triangles[r];
+      if (tried_by[t] == k) continue;
+      tried_by[t] = k;
+      const auto& triangle = surfaces.triangles[t];
+      std::array<Vec3, 3> corner;
+      for (std::size_t c = 0; c < 3; ++c) {
+        corner[c] =
+            positions_um[j] + box.minimum_image(positions_um[triangle[c]] - positions_um[j]);
+      }
+      const auto w = nearest_on_triangle(here, corner[0], corner[1], corner[2]);
+      const Vec3 point = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
+      const double distance = (here - point).norm();
+      // Ties (a shared edge or vertex) keep the first triangle met: a fixed order.
+      if (distance < entry.distance_um) entry = {distance, t, w, here - point};
+    }
+  }
+};
 
 }  // namespace
 
@@ -137,9 +209,13 @@ ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
   if (!(parameters.force_cap_pN > 0.0)) {
     throw std::invalid_argument("surface contact: the force cap must be > 0");
   }
-  // A triangle with a point within the range of x_i has a vertex within range + its longest
-  // edge of x_i: those vertices are found, and their triangles tried.
-  const double reach = (range + longest_edge_um(positions_um, surfaces, box)) * (1.0 + 1e-9);
+  // Every point of a triangle lies within L / sqrt(3) of one of its vertices, L its longest edge
+  // (the circumradius of an acute triangle, L / (2 sin of its largest angle >= 60 deg); in any
+  // other the farthest point lies on an edge, within half of it of an end). So a triangle with a
+  // point within the range of x_i has a vertex within range + L / sqrt(3): those vertices are
+  // found, and their triangles tried.
+  const double reach =
+      (range + longest_edge_um(positions_um, surfaces) / std::sqrt(3.0)) * (1.0 + 1e-9);
   select_candidates(positions_um, owner, reach, box, workspace);
   if (workspace.candidates.empty()) return statistics;
   const std::span<const std::uint32_t> kept = workspace.candidates;
@@ -148,56 +224,19 @@ ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
   list.build(workspace.candidate_positions_um, reach, box, kept_owner);
 
   const auto count = static_cast<std::ptrdiff_t>(kept.size());
-  const double reach_squared = reach * reach;
+  const NearestSurfaceSearch search{positions_um, owner, surfaces, box, workspace, reach * reach};
   std::vector<std::vector<SurfaceContact>> found(kept.size());
 #pragma omp parallel
   {
-    // Which vertex last tried each triangle: a triangle is met once from each of its vertices in
-    // reach, and only the first meeting can be the nearest (ties keep the first), so the others
-    // are skipped without changing the result.
+    // Which vertex last tried each triangle (NearestSurfaceSearch::find).
     std::vector<std::size_t> tried_by(surfaces.triangles.size(), kept.size());
 #pragma omp for schedule(dynamic, 64)
     for (std::ptrdiff_t signed_k = 0; signed_k < count; ++signed_k) {
       const auto k = static_cast<std::size_t>(signed_k);
       const std::uint32_t i = kept[k];
-      const Vec3& x = positions_um[i];
       // Per other cell (in order of first meeting), its nearest surface point.
       std::vector<std::pair<std::uint32_t, Nearest>> nearest;
-      list.for_each_candidate(workspace.candidate_positions_um[k], [&](std::uint32_t m) {
-        const std::uint32_t cell = kept_owner[m];
-        if (cell == owner[i]) return;
-        const std::uint32_t j = kept[m];
-        // x_i placed next to x_j: the triangles are taken around x_j's own position. A vertex
-        // beyond the reach has no triangle within the range that another vertex in reach lacks.
-        const Vec3 offset = box.minimum_image(x - positions_um[j]);
-        if (!(offset.squaredNorm() < reach_squared)) return;
-        auto entry = std::find_if(nearest.begin(), nearest.end(),
-                                  [cell](const auto& e) { return e.first == cell; });
-        if (entry == nearest.end()) {
-          nearest.push_back({cell, Nearest{}});
-          entry = nearest.end() - 1;
-        }
-        const Vec3 here = positions_um[j] + offset;
-        for (std::uint32_t r = surfaces.vertex_triangle_offsets[j];
-             r < surfaces.vertex_triangle_offsets[j + 1]; ++r) {
-          const std::uint32_t t = surfaces.vertex_triangles[r];
-          if (tried_by[t] == k) continue;
-          tried_by[t] = k;
-          const auto& triangle = surfaces.triangles[t];
-          std::array<Vec3, 3> corner;
-          for (std::size_t c = 0; c < 3; ++c) {
-            corner[c] =
-                positions_um[j] + box.minimum_image(positions_um[triangle[c]] - positions_um[j]);
-          }
-          const auto w = nearest_on_triangle(here, corner[0], corner[1], corner[2]);
-          const Vec3 point = w[0] * corner[0] + w[1] * corner[1] + w[2] * corner[2];
-          const double distance = (here - point).norm();
-          // Ties (a shared edge or vertex) keep the first triangle met: a fixed order.
-          if (distance < entry->second.distance_um) {
-            entry->second = {distance, t, w, here - point};
-          }
-        }
-      });
+      search.find(k, tried_by, nearest);
       for (const auto& [cell, near] : nearest) {
         if (!(near.distance_um < range)) continue;
         const double d = std::max(near.distance_um, 0.01 * range);
