@@ -143,6 +143,8 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
   const auto morphologies =
       setup::suspension_morphologies_from(request, mix, compression.factor, &import_notices);
   print_notices(import_notices);
+  // Printed once the input has passed every check, so that bad input stays one line.
+  const auto contact_notice = setup::contact_range_notice(config);
   const auto cells =
       settings.placed_cells.empty()
           ? cells_of(morphologies, mix, settings, config.number("suspension.hematocrit"))
@@ -176,6 +178,7 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
         // After the output observers (a resume restores their state), before the directory is
         // started (a refused checkpoint leaves no file behind).
         wire_checkpoints(simulation, checkpoint, directory, config);
+        if (contact_notice) print_notices(std::span(&*contact_notice, 1));
         directory.start(config, described);
         started = true;
       });

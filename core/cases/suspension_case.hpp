@@ -45,10 +45,13 @@ struct SuspensionSettings {
   std::size_t profile_rings = 10;   // of the hematocrit profile (suspension_profile.hpp)
   double wall_repulsion_pN_per_um2 = 20.0;
   double wall_repulsion_range_um = 0.5;
-  // The surface law's cap: the membrane's own vertex force cap (MembraneParameters::
+  // The surface law, acting over 1 um: the width of the phi2 kernel at dx 0.5 um, so that the
+  // fluid can still part two membranes where the push is strong (docs/physics.md, "Suspensions":
+  // over 0.75 um, within the kernel, the pushed membranes folded, and the vertex law let them
+  // through). Its cap: the membrane's own vertex force cap (MembraneParameters::
   // vertex_force_cap_pN, HemoCell's 50 pN), so that a contact push alone never exceeds what a
   // vertex may carry.
-  contact::ContactParameters contact{5.0, 0.75, contact::ContactLaw::vertex, 50.0};
+  contact::ContactParameters contact{5.0, 1.0, contact::ContactLaw::surface, 50.0};
   PackingSettings packing;
   // Cells placed by hand (suspension.cells): one pose per cell, instead of the packing.
   std::vector<CellPose> placed_cells;

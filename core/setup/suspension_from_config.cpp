@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "ibm/delta_kernels.hpp"
 #include "setup/capillary_from_config.hpp"
 #include "setup/cell_from_config.hpp"
 #include "setup/membrane_from_config.hpp"
@@ -131,6 +132,19 @@ cases::SuspensionSettings suspension_settings_from(const config::Config& config)
   settings.fluid_tolerance = config.number("capillary.fluid_tolerance");
   settings.fluid_max_steps = static_cast<std::size_t>(config.integer("capillary.fluid_max_steps"));
   return settings;
+}
+
+std::optional<std::string> contact_range_notice(const config::Config& config) {
+  const double range_um = config.number("suspension.contact_range_um");
+  const double spacing_um = config.number("lattice.spacing_um");
+  const auto& kernel = ibm::find_delta_kernel(config.string("ibm.kernel"));
+  const double width_um = kernel.support_width * spacing_um;
+  if (!(range_um < width_um)) return std::nullopt;
+  return "suspension.contact_range_um " + format_number(range_um) + " um is shorter than the " +
+         config.string("ibm.kernel") + " kernel's width (" + std::to_string(kernel.support_width) +
+         " x " + format_number(spacing_um) +
+         " um): membranes held closer than that are hardly parted by the fluid, and the push "
+         "can fold a membrane or let it through (docs/validation.md, Suspensions)";
 }
 
 std::string placed_kind_name(const config::CellPlacement& cell) {

@@ -3,6 +3,7 @@
 // number of cells of each, and its low-Reynolds time-scale compression.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,12 @@ SuspensionMix suspension_mix_from(const config::Config& config);
 std::string placed_kind_name(const config::CellPlacement& cell);
 
 cases::SuspensionSettings suspension_settings_from(const config::Config& config);
+
+// A notice when suspension.contact_range_um is shorter than the immersed-boundary kernel's width
+// (ibm.kernel's support times lattice.spacing_um): two membranes the contact holds closer than
+// that spread into the same fluid nodes, their equal and opposite pushes largely cancel there,
+// and in a 10 um tube the push then folded a membrane or let it through (docs/validation.md).
+std::optional<std::string> contact_range_notice(const config::Config& config);
 
 // Each kind of the mix resolved from `request` with its own --morphology (and mesh.file where it
 // has one): mesh and membrane. The repairs made on importing a mesh file, each after its kind's

@@ -42,6 +42,9 @@ TEST(CliSuspension, WritesTheRunDirectoryOfAMixedSuspension) {
                                      run_dir.string() + "'",
                                  scratch.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
+  // 1.75 um of contact range on dx 1 um: inside the phi2 kernel's 2 um.
+  EXPECT_NE(result.err.find("shorter than the phi2 kernel's width (2 x 1 um)"), std::string::npos)
+      << result.err;
   const auto printed = printed_run_result(result, run_dir, "capillary");
   const auto& suspension = printed["suspension"];
   EXPECT_EQ(suspension["cells"], 2);
@@ -133,6 +136,7 @@ TEST(CliSuspension, CellsOvertakingEachOtherInTubeFlowNeverInterpenetrate) {
           run_dir.string() + "'",
       scratch.path());
   ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(result.err.find("kernel's width"), std::string::npos) << result.err;  // 1 um on dx 0.5
   const auto suspension = printed_run_result(result, run_dir, "capillary")["suspension"];
   ASSERT_EQ(suspension["cells"], 4);
   EXPECT_EQ(suspension["samples_with_pierced_cells"], 0);

@@ -58,13 +58,15 @@ void add_suspension_options(OptionTable& table) {
   table
       .add_number("suspension.contact_force_pN", "pN",
                   kSuspensionDefaults.contact.force_at_contact_pN,
-                  "Cell-cell repulsion between two vertices of different cells at zero distance, "
-                  "falling as (1 - d/range)^2.")
+                  "Strength of the cell-cell repulsion: the surface law's push at half the range, "
+                  "the vertex law's pair force at zero distance (contact_law).")
       .at_least(0.0);
-  table.add_choice("suspension.contact_law", {"vertex", "surface"}, "vertex",
-                   "How cells push each other apart: vertex (vertex pairs, F0 (1 - d/r)^2, "
-                   "contact_force_pN at d = 0) or surface (each vertex from the nearest point of "
-                   "another cell's surface, F (r/d - 1)^2, contact_force_pN at d = r/2).");
+  table.add_choice(
+      "suspension.contact_law", {"vertex", "surface"},
+      kSuspensionDefaults.contact.law == contact::ContactLaw::surface ? "surface" : "vertex",
+      "How cells push each other apart: vertex (vertex pairs, F0 (1 - d/r)^2, "
+      "contact_force_pN at d = 0) or surface (each vertex from the nearest point of "
+      "another cell's surface, F (r/d - 1)^2, contact_force_pN at d = r/2).");
   table
       .add_number("suspension.contact_force_cap_pN", "pN", kSuspensionDefaults.contact.force_cap_pN,
                   "Surface law: the largest push a vertex gets from one other cell; closer in, "
@@ -73,7 +75,9 @@ void add_suspension_options(OptionTable& table) {
       .above(0.0);
   table
       .add_number("suspension.contact_range_um", "um", kSuspensionDefaults.contact.range_um,
-                  "Range of the cell-cell repulsion; at least the membranes' longest edge.")
+                  "Range of the cell-cell repulsion; at least the membranes' longest edge, and "
+                  "best the immersed-boundary kernel's width (2 lattice spacings for phi2) or "
+                  "more: closer membranes are not parted by the fluid (a notice says so).")
       .above(0.0);
   table
       .add_number("suspension.wall_repulsion_pN_per_um2", "pN/um^2",
