@@ -128,6 +128,7 @@ void Cell::save_state(StateArchive& archive, const std::string& prefix) const {
   if (has_membrane_friction()) {
     archive.put(prefix + "membrane_velocities_lu", membrane_velocities_lu_);
     archive.put(prefix + "last_friction_step", {static_cast<double>(last_friction_step_)});
+    friction_.save_state(archive, prefix);
   }
   advancer_.save_state(archive, prefix);
 }
@@ -141,6 +142,7 @@ void Cell::restore_state(StateArchive& archive, const std::string& prefix,
     archive.take(prefix + "membrane_velocities_lu", membrane_velocities_lu_);
     last_friction_step_ =
         static_cast<std::size_t>(archive.take_number(prefix + "last_friction_step"));
+    friction_.restore_state(archive, prefix);
   }
   advancer_.restore_state(archive, prefix, vertex_count());
   // Where the next step computes the forces; until then, what positions_um() shows.

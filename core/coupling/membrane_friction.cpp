@@ -55,6 +55,35 @@ void ImplicitMembraneFriction::add_momentum_to(lattice::FluidSolver& fluid) cons
   fluid.add_momentum(nodes_, momentum_);
 }
 
+bool ImplicitMembraneFriction::add_previous_correction(std::span<Vec3> velocity) const {
+  bool added = false;
+  std::size_t p = 0;
+  for (std::size_t k = 0; k < nodes_.size(); ++k) {
+    while (p < previous_nodes_.size() && previous_nodes_[p] < nodes_[k]) ++p;
+    if (p == previous_nodes_.size()) break;
+    if (previous_nodes_[p] != nodes_[k]) continue;
+    velocity[k] += previous_correction_[p];
+    added = true;
+  }
+  return added;
+}
+
+void ImplicitMembraneFriction::save_state(StateArchive& archive, const std::string& prefix) const {
+  archive.put(prefix + "friction_nodes",
+              std::vector<double>(previous_nodes_.begin(), previous_nodes_.end()));
+  archive.put(prefix + "friction_correction_lu", previous_correction_);
+}
+
+void ImplicitMembraneFriction::restore_state(StateArchive& archive, const std::string& prefix) {
+  const auto nodes = archive.take(prefix + "friction_nodes", std::nullopt);
+  previous_nodes_.assign(nodes.size(), 0);
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    previous_nodes_[k] = static_cast<std::size_t>(nodes[k]);
+  }
+  previous_correction_.resize(nodes.size());
+  archive.take(prefix + "friction_correction_lu", previous_correction_);
+}
+
 std::size_t ImplicitMembraneFriction::solve(const ibm::InterpolationStencil& stencil,
                                             std::span<const Vec3> positions_lu,
                                             const membrane::EdgeNetwork& network,
@@ -119,22 +148,28 @@ std::size_t ImplicitMembraneFriction::solve(const ibm::InterpolationStencil& ste
   }
   for (auto& block : inverse_blocks) block = block.inverse().eval();
 
-  std::vector<Vec3> velocity = fluid_velocity;  // u', starting from u
+  std::vector<Vec3> velocity = fluid_velocity;  // u', first at u
   std::vector<Vec3> product(node_count), residual(node_count), preconditioned(node_count),
       direction(node_count);
   apply_operator(velocity, product);
   double momentum_squared = 0.0;
   for (std::size_t k = 0; k < node_count; ++k) {
     residual[k] = density[k] * fluid_velocity[k] - product[k];
-    preconditioned[k] = inverse_blocks[k] * residual[k];
     momentum_squared += (density[k] * fluid_velocity[k]).squaredNorm();
   }
-  // Relative to the first residual (the friction at u' = u), but never below round-off of the
-  // momentum itself (a rigid motion meets no friction: there the first residual is round-off).
+  // Relative to the residual at u' = u (the friction there), but never below round-off of the
+  // momentum itself (a rigid motion meets no friction: there that residual is round-off).
   constexpr double kRoundOff = 1e-13;
   const double tolerance_squared =
       std::max(settings.relative_tolerance * settings.relative_tolerance * dot(residual, residual),
                kRoundOff * kRoundOff * momentum_squared);
+  if (add_previous_correction(velocity)) {
+    apply_operator(velocity, product);
+    for (std::size_t k = 0; k < node_count; ++k) {
+      residual[k] = density[k] * fluid_velocity[k] - product[k];
+    }
+  }
+  for (std::size_t k = 0; k < node_count; ++k) preconditioned[k] = inverse_blocks[k] * residual[k];
   direction = preconditioned;
   double rho = dot(residual, preconditioned);
   std::size_t iterations = 0;
@@ -161,6 +196,11 @@ std::size_t ImplicitMembraneFriction::solve(const ibm::InterpolationStencil& ste
     for (std::size_t k = 0; k < node_count; ++k) {
       direction[k] = preconditioned[k] + beta * direction[k];
     }
+  }
+  previous_nodes_ = nodes_;
+  previous_correction_.resize(node_count);
+  for (std::size_t k = 0; k < node_count; ++k) {
+    previous_correction_[k] = velocity[k] - fluid_velocity[k];
   }
   // The momentum exchanged is the friction impulse at the solution, -dt S^T Gamma S u', rather
   // than rho (u' - u): equal to the tolerance, and it sums to zero exactly (each edge's pair
