@@ -111,7 +111,7 @@ nlohmann::ordered_json suspension_result_section(std::span<const std::string> mo
        a.discharge_hematocrit > 0.0 ? a.tube_hematocrit / a.discharge_hematocrit : 0.0},
       {"cell_free_layer_um", a.cell_free_layer_um},
       {"hematocrit_profile", hematocrit_profile_section(settings, a.volume_fraction_by_ring)},
-      {"contact_law", settings.contact.law == contact::ContactLaw::surface ? "surface" : "vertex"},
+      {"contact_law", contact::contact_law_name(settings.contact.law)},
       {"contact_force_pN", settings.contact.force_at_contact_pN},
       {"contact_range_um", settings.contact.range_um},
       {"contact_force_cap_pN", settings.contact.force_cap_pN},

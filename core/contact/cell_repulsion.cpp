@@ -5,7 +5,34 @@
 #include <stdexcept>
 #include <vector>
 
+#include "common/registry.hpp"
+
 namespace rbcsim::contact {
+
+namespace {
+
+struct NamedContactLaw {
+  std::string_view name;
+  ContactLaw law;
+};
+constexpr NamedContactLaw kContactLaws[] = {{"vertex", ContactLaw::vertex},
+                                            {"surface", ContactLaw::surface}};
+
+}  // namespace
+
+std::vector<std::string> contact_law_names() { return entry_names(kContactLaws); }
+
+std::string contact_law_name(ContactLaw law) {
+  for (const auto& entry : kContactLaws) {
+    if (entry.law == law) return std::string(entry.name);
+  }
+  throw std::logic_error("contact law: not in the table");
+}
+
+ContactLaw contact_law_named(std::string_view name) {
+  return find_entry(kContactLaws, name, "suspension.contact_law").law;
+}
+
 namespace {
 
 // The cells as runs of equal owners, and each one's bounding box around its first vertex by

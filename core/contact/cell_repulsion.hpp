@@ -13,6 +13,8 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/vec3.hpp"
@@ -25,6 +27,12 @@ namespace rbcsim::contact {
 //   surface: between each vertex and the nearest point of another cell's surface
 //            (surface_repulsion.hpp), along the surface's outward side.
 enum class ContactLaw { vertex, surface };
+
+// The laws' names (suspension.contact_law, result.json's contact_law), one table for both ways.
+std::vector<std::string> contact_law_names();
+std::string contact_law_name(ContactLaw law);
+// Throws InputError naming suspension.contact_law for a name not in contact_law_names().
+ContactLaw contact_law_named(std::string_view name);
 
 struct ContactParameters {
   // vertex: the magnitude at zero distance; surface: at half the range. 0: no contact force.

@@ -116,11 +116,10 @@ cases::SuspensionSettings suspension_settings_from(const config::Config& config)
   }
   settings.wall_repulsion_pN_per_um2 = config.number("suspension.wall_repulsion_pN_per_um2");
   settings.wall_repulsion_range_um = config.number("suspension.wall_repulsion_range_um");
-  settings.contact = {
-      config.number("suspension.contact_force_pN"), config.number("suspension.contact_range_um"),
-      config.string("suspension.contact_law") == "surface" ? contact::ContactLaw::surface
-                                                           : contact::ContactLaw::vertex,
-      config.number("suspension.contact_force_cap_pN")};
+  settings.contact = {config.number("suspension.contact_force_pN"),
+                      config.number("suspension.contact_range_um"),
+                      contact::contact_law_named(config.string("suspension.contact_law")),
+                      config.number("suspension.contact_force_cap_pN")};
   settings.packing.cell_gap_um = settings.contact.range_um;
   settings.packing.wall_gap_um = settings.wall_repulsion_range_um;
   settings.packing.seed = static_cast<unsigned>(config.integer("suspension.seed"));

@@ -61,12 +61,11 @@ void add_suspension_options(OptionTable& table) {
                   "Strength of the cell-cell repulsion: the surface law's push at half the range, "
                   "the vertex law's pair force at zero distance (contact_law).")
       .at_least(0.0);
-  table.add_choice(
-      "suspension.contact_law", {"vertex", "surface"},
-      kSuspensionDefaults.contact.law == contact::ContactLaw::surface ? "surface" : "vertex",
-      "How cells push each other apart: vertex (vertex pairs, F0 (1 - d/r)^2, "
-      "contact_force_pN at d = 0) or surface (each vertex from the nearest point of "
-      "another cell's surface, F (r/d - 1)^2, contact_force_pN at d = r/2).");
+  table.add_choice("suspension.contact_law", contact::contact_law_names(),
+                   contact::contact_law_name(kSuspensionDefaults.contact.law),
+                   "How cells push each other apart: vertex (vertex pairs, F0 (1 - d/r)^2, "
+                   "contact_force_pN at d = 0) or surface (each vertex from the nearest point of "
+                   "another cell's surface, F (r/d - 1)^2, contact_force_pN at d = r/2).");
   table
       .add_number("suspension.contact_force_cap_pN", "pN", kSuspensionDefaults.contact.force_cap_pN,
                   "Surface law: the largest push a vertex gets from one other cell; closer in, "
