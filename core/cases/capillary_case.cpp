@@ -69,7 +69,7 @@ void add_repulsion(coupling::CoupledSimulation& simulation, const geometry::Wall
                                 settings.wall_repulsion_range_um};
   simulation.add_external_force(
       [&wall, repulsion](std::size_t, const coupling::Cell& state, std::span<Vec3> forces_pN) {
-        add_wall_repulsion(
+        add_tube_wall_repulsion(
             state.positions_um(), [&wall](double x_um) { return *wall.radius_at_um(x_um); },
             repulsion, forces_pN);
       });

@@ -48,7 +48,8 @@ void validate(const SuspensionSettings& settings) {
   }
 }
 
-// The range must bridge the membranes' largest edge (cell_repulsion.hpp).
+}  // namespace
+
 void require_contact_reaches_across_edges(std::span<const SuspensionMorphology> morphologies,
                                           double range_um) {
   for (const auto& morphology : morphologies) {
@@ -66,6 +67,8 @@ void require_contact_reaches_across_edges(std::span<const SuspensionMorphology> 
     }
   }
 }
+
+namespace {
 
 struct TubeLattice {
   geometry::TubeWall wall;
@@ -379,6 +382,23 @@ std::vector<std::size_t> cell_counts_for(double hematocrit, double lumen_volume_
   return counts;
 }
 
+void add_suspension_walls(coupling::CoupledSimulation& simulation,
+                          std::span<const SuspensionMorphology> morphologies,
+                          std::span<const std::size_t> cell_morphologies,
+                          const WallRepulsion& per_um2, const SuspensionWall& wall) {
+  std::vector<WallRepulsion> repulsions;
+  for (const auto& morphology : morphologies) {
+    repulsions.push_back({per_um2.force_at_wall_pN * mesh::surface_area_um2(morphology.mesh) /
+                              static_cast<double>(morphology.mesh.vertex_count()),
+                          per_um2.range_um});
+  }
+  const std::vector<std::size_t> kinds(cell_morphologies.begin(), cell_morphologies.end());
+  simulation.add_external_force([repulsions, kinds, wall](std::size_t c, const coupling::Cell& cell,
+                                                          std::span<Vec3> forces_pN) {
+    add_wall_repulsion(cell.positions_um(), wall, repulsions[kinds[c]], forces_pN);
+  });
+}
+
 SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
                              std::span<const std::size_t> cell_morphologies,
                              const SuspensionPhysics& physics, const SuspensionSettings& settings,
@@ -441,23 +461,10 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
                         packing.positions_um[c]);
     cell_volumes_um3.push_back(mesh::enclosed_volume_um3(morphology.mesh));
   }
-  // The wall's push (wall_repulsion.hpp), each cell's at contact its pressure times its area per
-  // vertex.
-  std::vector<WallRepulsion> repulsions;
-  for (const auto& morphology : morphologies) {
-    repulsions.push_back(
-        {settings.wall_repulsion_pN_per_um2 * mesh::surface_area_um2(morphology.mesh) /
-             static_cast<double>(morphology.mesh.vertex_count()),
-         settings.wall_repulsion_range_um});
-  }
-  const std::vector<std::size_t> kinds(cell_morphologies.begin(), cell_morphologies.end());
-  simulation.add_external_force([repulsions, kinds, radius_um](std::size_t c,
-                                                               const coupling::Cell& cell,
-                                                               std::span<Vec3> forces_pN) {
-    add_wall_repulsion(
-        cell.positions_um(), [radius_um](double) { return radius_um; }, repulsions[kinds[c]],
-        forces_pN);
-  });
+  add_suspension_walls(
+      simulation, morphologies, cell_morphologies,
+      {settings.wall_repulsion_pN_per_um2, settings.wall_repulsion_range_um},
+      [radius_um](const Vec3& position) { return tube_wall_distance(position, radius_um); });
   simulation.set_cell_contact(settings.contact, "suspension.contact_force_pN");
   const std::size_t sample_steps = interval_steps(physics.units, settings.sample_interval_s);
   std::vector<std::size_t> sampled_at_steps;

@@ -143,6 +143,21 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
                              const SuspensionPhysics& physics, const SuspensionSettings& settings,
                              const SuspensionConfigure& configure = {});
 
+// Throws InputError naming suspension.contact_range_um when the range is shorter than the longest
+// membrane edge of a morphology: a vertex could pass between another cell's vertices
+// (cell_repulsion.hpp).
+void require_contact_reaches_across_edges(std::span<const SuspensionMorphology> morphologies,
+                                          double range_um);
+
+// The walls' push on every cell (wall_repulsion.hpp): `per_um2.force_at_wall_pN` is a pressure
+// (pN/um^2), each cell's push at contact that pressure times its morphology's area per vertex;
+// `wall` tells where a point lies from the walls.
+using SuspensionWall = std::function<WallDistance(const Vec3& position_um)>;
+void add_suspension_walls(coupling::CoupledSimulation& simulation,
+                          std::span<const SuspensionMorphology> morphologies,
+                          std::span<const std::size_t> cell_morphologies,
+                          const WallRepulsion& per_um2, const SuspensionWall& wall);
+
 // The number of cells of each morphology that fills a lumen of volume_um3 to `hematocrit` with
 // number fractions `fractions` (summing to 1): N = round(H V / sum_m f_m V_m) cells, split by
 // largest remainders. Throws InputError naming suspension.hematocrit when N is 0.

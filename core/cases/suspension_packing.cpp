@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "cases/wall_repulsion.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/interrupt.hpp"
@@ -63,19 +64,68 @@ Eigen::Quaterniond random_orientation(std::mt19937& generator) {
       std::sqrt(1.0 - u1) * std::cos(two_pi * u2), std::sqrt(u1) * std::sin(two_pi * u3));
 }
 
-// A point at axial position x, uniformly random over the disc of the lumen that keeps
-// clear_radius_um from the wall.
-Vec3 random_off_axis(std::mt19937& generator, const PackingTube& tube, double clear_radius_um,
+// What the packing needs of its space: the periodic box, the volume, the walls, random places.
+contact::PeriodicBox periodic_box(const PackingSpace& space) {
+  if (const auto* slab = std::get_if<PackingSlab>(&space)) {
+    return {{slab->length_um, 0.0, slab->width_um}};
+  }
+  return {{std::get<PackingTube>(space).length_um, 0.0, 0.0}};
+}
+
+double volume_um3(const PackingSpace& space) {
+  if (const auto* slab = std::get_if<PackingSlab>(&space)) {
+    return slab->gap_um * slab->length_um * slab->width_um;
+  }
+  const auto& tube = std::get<PackingTube>(space);
+  return std::numbers::pi * tube.radius_um * tube.radius_um * tube.length_um;
+}
+
+WallDistance wall_distance(const PackingSpace& space, const Vec3& position_um) {
+  if (const auto* slab = std::get_if<PackingSlab>(&space)) {
+    return slab_wall_distance(position_um, 0.5 * slab->gap_um);
+  }
+  return tube_wall_distance(position_um, std::get<PackingTube>(space).radius_um);
+}
+
+std::string walls_of(const PackingSpace& space) {
+  if (const auto* slab = std::get_if<PackingSlab>(&space)) {
+    return "the walls (gap " + format_number(slab->gap_um) + " um)";
+  }
+  return "the wall (radius " + format_number(std::get<PackingTube>(space).radius_um) + " um)";
+}
+
+// Centres wrapped into the space's periodic ranges.
+void wrap(const PackingSpace& space, Vec3& centre_um) {
+  const auto box = periodic_box(space);
+  for (int axis = 0; axis < 3; ++axis) {
+    const double length = box.length_um[static_cast<std::size_t>(axis)];
+    if (length > 0.0) centre_um[axis] -= length * std::floor(centre_um[axis] / length);
+  }
+}
+
+// A point at position x along the flow, uniformly random over the cross-section points that keep
+// clear_radius_um from the walls (the tube's disc; the slab's gap times its width).
+Vec3 random_off_axis(std::mt19937& generator, const PackingSpace& space, double clear_radius_um,
                      double x) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
+  if (const auto* slab = std::get_if<PackingSlab>(&space)) {
+    const double half_um = std::max(0.5 * slab->gap_um - clear_radius_um, 0.0);
+    const double y = half_um * (2.0 * unit(generator) - 1.0);
+    return {x, y, slab->width_um * unit(generator)};
+  }
+  const auto& tube = std::get<PackingTube>(space);
   const double r = std::max(tube.radius_um - clear_radius_um, 0.0) * std::sqrt(unit(generator));
   const double angle = 2.0 * std::numbers::pi * unit(generator);
   return {x, r * std::cos(angle), r * std::sin(angle)};
 }
 
-Vec3 random_place(std::mt19937& generator, const PackingTube& tube, double clear_radius_um) {
+double length_um(const PackingSpace& space) {
+  return std::visit([](const auto& shape) { return shape.length_um; }, space);
+}
+
+Vec3 random_place(std::mt19937& generator, const PackingSpace& space, double clear_radius_um) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  return random_off_axis(generator, tube, clear_radius_um, tube.length_um * unit(generator));
+  return random_off_axis(generator, space, clear_radius_um, length_um(space) * unit(generator));
 }
 
 // The seeded start of PackingOrientation::axial: cell c at slot slots[c] of N along the axis.
@@ -84,12 +134,12 @@ struct AxialStart {
   Vec3 centre_um;
 };
 
-AxialStart axial_start(std::mt19937& generator, const PackingTube& tube, double clear_radius_um,
+AxialStart axial_start(std::mt19937& generator, const PackingSpace& space, double clear_radius_um,
                        std::size_t slot, std::size_t slots) {
   std::uniform_real_distribution<double> unit(0.0, 1.0);
-  const double spacing_um = tube.length_um / static_cast<double>(slots);
+  const double spacing_um = length_um(space) / static_cast<double>(slots);
   const double x = spacing_um * (static_cast<double>(slot) + 0.5 + 0.5 * (unit(generator) - 0.5));
-  const Vec3 centre_um = random_off_axis(generator, tube, clear_radius_um, x);
+  const Vec3 centre_um = random_off_axis(generator, space, clear_radius_um, x);
   const double spin = 2.0 * std::numbers::pi * unit(generator);
   return {(Eigen::Quaterniond::FromTwoVectors(Vec3::UnitZ(), Vec3::UnitX()) *
            Eigen::Quaterniond(Eigen::AngleAxisd(spin, Vec3::UnitZ())))
@@ -122,9 +172,9 @@ class Packer {
  public:
   // Cells at seeded random places and orientations (`poses` empty) or at the poses given.
   Packer(std::span<const mesh::TriangleMesh> meshes, std::span<const std::size_t> cell_prototypes,
-         const PackingTube& tube, const PackingSettings& settings,
+         const PackingSpace& space, const PackingSettings& settings,
          std::span<const CellPose> poses = {})
-      : tube_(tube), settings_(settings) {
+      : space_(space), settings_(settings) {
     for (const auto& mesh : meshes) prototypes_.push_back(centred(mesh));
     std::mt19937 generator(settings.seed);
     const bool axial = settings.orientation == PackingOrientation::axial;
@@ -137,12 +187,12 @@ class Packer {
       const double clear_radius_um = kStartScale * prototypes_.at(p).reach_um;
       if (poses.empty() && axial) {
         const auto start =
-            axial_start(generator, tube, clear_radius_um, slots[c], cell_prototypes.size());
+            axial_start(generator, space, clear_radius_um, slots[c], cell_prototypes.size());
         cell.orientation = start.orientation;
         cell.centre_um = start.centre_um;
       } else if (poses.empty()) {
         cell.orientation = random_orientation(generator);
-        cell.centre_um = random_place(generator, tube, clear_radius_um);
+        cell.centre_um = random_place(generator, space, clear_radius_um);
       } else {
         cell.orientation = orientation_of(poses[c]);
         cell.centre_um = poses[c].centre_um;
@@ -155,36 +205,41 @@ class Packer {
   }
 
   // At full size: the first problem of cells placed by hand (closer than the gap to another
-  // cell, to their own image across the period, or to the wall), or nothing.
+  // cell, to their own image across a period, or to a wall), or nothing.
   std::optional<std::string> placement_problem() {
     place(1.0);
-    const double wall_limit_um = tube_.radius_um - settings_.wall_gap_um;
+    const auto box = periodic_box(space_);
     std::size_t offset = 0;
     for (std::size_t c = 0; c < cells_.size(); ++c) {
       const auto count = prototypes_[cells_[c].prototype].offsets_um.size();
-      double low_x = std::numeric_limits<double>::infinity(), high_x = -low_x, outermost = 0.0;
+      Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
+      double nearest_wall_um = std::numeric_limits<double>::infinity();
       for (std::size_t v = offset; v < offset + count; ++v) {
-        low_x = std::min(low_x, positions_[v].x());
-        high_x = std::max(high_x, positions_[v].x());
-        outermost = std::max(outermost, std::hypot(positions_[v].y(), positions_[v].z()));
+        low = low.cwiseMin(positions_[v]);
+        high = high.cwiseMax(positions_[v]);
+        nearest_wall_um =
+            std::min(nearest_wall_um, wall_distance(space_, positions_[v]).distance_um);
       }
       offset += count;
-      if (outermost > wall_limit_um) {
-        return "cell " + std::to_string(c) + " reaches " + format_number(outermost) +
-               " um from the axis: closer to the wall (radius " + format_number(tube_.radius_um) +
-               " um) than the wall repulsion's range, " + format_number(settings_.wall_gap_um) +
-               " um";
+      if (nearest_wall_um < settings_.wall_gap_um) {
+        return "cell " + std::to_string(c) + " comes within " + format_number(nearest_wall_um) +
+               " um of " + walls_of(space_) +
+               ": closer to the wall than the wall repulsion's range, " +
+               format_number(settings_.wall_gap_um) + " um";
       }
-      if (high_x - low_x + settings_.cell_gap_um > tube_.length_um) {
-        return "cell " + std::to_string(c) + " is " + format_number(high_x - low_x) +
-               " um long along the axis: it meets its own image across the tube's period (" +
-               format_number(tube_.length_um) + " um)";
+      for (int axis = 0; axis < 3; ++axis) {
+        const double period = box.length_um[static_cast<std::size_t>(axis)];
+        const double extent = high[axis] - low[axis];
+        if (period > 0.0 && extent + settings_.cell_gap_um > period) {
+          return "cell " + std::to_string(c) + " is " + format_number(extent) + " um long along " +
+                 std::string(1, static_cast<char>('x' + axis)) +
+                 ": it meets its own image across the period (" + format_number(period) + " um)";
+        }
       }
     }
     std::vector<Vec3> ignored(positions_.size(), Vec3::Zero());
     const auto statistics = contact::add_cell_contact_forces(
-        positions_, owners_, {1.0, settings_.cell_gap_um},
-        contact::PeriodicBox{{tube_.length_um, 0.0, 0.0}}, ignored, contact_workspace_);
+        positions_, owners_, {1.0, settings_.cell_gap_um}, box, ignored, contact_workspace_);
     if (statistics.pairs_in_range == 0) return std::nullopt;
     for (std::size_t v = 0; v < positions_.size(); ++v) {
       if (ignored[v] == Vec3::Zero()) continue;
@@ -203,17 +258,15 @@ class Packer {
     // The pushes reach a little beyond the gap, so that a pair just inside it is still pushed
     // firmly (the contact law vanishes at its range).
     const auto statistics = contact::add_cell_contact_forces(
-        positions_, owners_, {1.0, kPushReach * settings_.cell_gap_um},
-        contact::PeriodicBox{{tube_.length_um, 0.0, 0.0}}, pushes, contact_workspace_);
+        positions_, owners_, {1.0, kPushReach * settings_.cell_gap_um}, periodic_box(space_),
+        pushes, contact_workspace_);
     bool overlap = statistics.closest_um < settings_.cell_gap_um;
-    const double wall_limit_um = tube_.radius_um - settings_.wall_gap_um;
     for (std::size_t v = 0; v < positions_.size(); ++v) {
-      const Vec3& position = positions_[v];
-      const double r = std::hypot(position.y(), position.z());
-      if (r <= wall_limit_um) continue;
+      const auto wall = wall_distance(space_, positions_[v]);
+      if (wall.distance_um >= settings_.wall_gap_um) continue;
       overlap = true;
-      pushes[v] -= ((r - wall_limit_um) / settings_.wall_gap_um + 0.1) *
-                   Vec3(0.0, position.y(), position.z()) / r;
+      pushes[v] +=
+          ((settings_.wall_gap_um - wall.distance_um) / settings_.wall_gap_um + 0.1) * wall.inward;
     }
     if (overlap) move(scale, pushes);
     return overlap;
@@ -236,9 +289,7 @@ class Packer {
     return packing;
   }
 
-  double lumen_volume_um3() const {
-    return std::numbers::pi * tube_.radius_um * tube_.radius_um * tube_.length_um;
-  }
+  double lumen_volume_um3() const { return volume_um3(space_); }
 
   double hematocrit_at(double scale) const {
     double volume_um3 = 0.0;
@@ -279,7 +330,7 @@ class Packer {
       // A net push of one full-strength pair or more moves the cell a whole step; a weaker one
       // proportionally less, so that balanced cells settle instead of jittering.
       cell.centre_um += step_um * force / std::max(1.0, force.norm());
-      cell.centre_um.x() -= tube_.length_um * std::floor(cell.centre_um.x() / tube_.length_um);
+      wrap(space_, cell.centre_um);
       const double arm_um = scale * prototype.reach_um;
       const double torque_pushes = torque.norm() / arm_um;
       const double angle = step_um / arm_um * std::min(1.0, torque_pushes);
@@ -290,7 +341,7 @@ class Packer {
     }
   }
 
-  PackingTube tube_;
+  PackingSpace space_;
   PackingSettings settings_;
   std::vector<Prototype> prototypes_;
   std::vector<RigidCell> cells_;
@@ -372,14 +423,13 @@ std::vector<std::optional<std::size_t>> find_pierced_cells(
 // A vertex of one cell inside another: a surface through another one. `what` names the option.
 void require_no_pierced_cells(const Packing& packing,
                               std::span<const mesh::TriangleMesh> prototypes,
-                              std::span<const std::size_t> cell_prototypes, const PackingTube& tube,
-                              bool by_hand) {
+                              std::span<const std::size_t> cell_prototypes,
+                              const PackingSpace& space, bool by_hand) {
   std::vector<std::span<const mesh::Triangle>> triangles;
   for (const std::size_t prototype : cell_prototypes) {
     triangles.emplace_back(prototypes[prototype].triangles);
   }
-  const auto pierced = find_pierced_cells(packing.positions_um, triangles,
-                                          contact::PeriodicBox{{tube.length_um, 0.0, 0.0}});
+  const auto pierced = find_pierced_cells(packing.positions_um, triangles, periodic_box(space));
   for (std::size_t a = 0; a < pierced.size(); ++a) {
     if (!pierced[a]) continue;
     const std::string problem =
@@ -389,26 +439,32 @@ void require_no_pierced_cells(const Packing& packing,
   }
 }
 
-Packing place_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
-                            std::span<const std::size_t> cell_prototypes,
-                            std::span<const CellPose> poses, const PackingTube& tube,
-                            const PackingSettings& settings) {
+Packing place_cells(std::span<const mesh::TriangleMesh> prototypes,
+                    std::span<const std::size_t> cell_prototypes, std::span<const CellPose> poses,
+                    const PackingSpace& space, const PackingSettings& settings) {
   if (poses.size() != cell_prototypes.size() || poses.empty()) {
-    throw std::invalid_argument("place_cells_in_tube: one pose per cell, and a cell at least");
+    throw std::invalid_argument("place_cells: one pose per cell, and a cell at least");
   }
-  Packer packer(prototypes, cell_prototypes, tube, settings, poses);
+  Packer packer(prototypes, cell_prototypes, space, settings, poses);
   if (const auto problem = packer.placement_problem()) {
     throw InputError("suspension.cells", *problem);
   }
   auto packing = packer.result(0);
-  require_no_pierced_cells(packing, prototypes, cell_prototypes, tube, true);
+  require_no_pierced_cells(packing, prototypes, cell_prototypes, space, true);
   return packing;
 }
 
-Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
-                           std::span<const std::size_t> cell_prototypes, const PackingTube& tube,
-                           const PackingSettings& settings) {
-  Packer packer(prototypes, cell_prototypes, tube, settings);
+Packing place_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
+                            std::span<const std::size_t> cell_prototypes,
+                            std::span<const CellPose> poses, const PackingTube& tube,
+                            const PackingSettings& settings) {
+  return place_cells(prototypes, cell_prototypes, poses, tube, settings);
+}
+
+Packing pack_cells(std::span<const mesh::TriangleMesh> prototypes,
+                   std::span<const std::size_t> cell_prototypes, const PackingSpace& space,
+                   const PackingSettings& settings) {
+  Packer packer(prototypes, cell_prototypes, space, settings);
   double scale = kStartScale;
   double clear_scale = 0.0;  // the largest at which no cell overlapped
   std::size_t iteration = 0;
@@ -420,25 +476,32 @@ Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
     scale = std::min(1.0, scale + kScaleStep);
   }
   if (iteration == settings.max_iterations) {
-    throw InputError("suspension.hematocrit",
-                     "could not pack " + std::to_string(cell_prototypes.size()) +
-                         " cells into the tube: after " + std::to_string(iteration) +
-                         " iterations they were clear only at " + format_number(clear_scale) +
-                         " of their size, hematocrit " +
-                         format_number(packer.hematocrit_at(clear_scale)) + " (the " +
-                         std::to_string(cell_prototypes.size()) +
-                         " cells at full size: " + format_number(packer.hematocrit_at(1.0)) +
-                         "); lower the hematocrit or widen/lengthen the tube" +
-                         (settings.orientation == PackingOrientation::random
-                              ? std::string(", or start the cells lined up along the axis "
-                                            "(suspension.packing_orientation=axial)")
-                              : std::string()));
+    throw InputError(
+        "suspension.hematocrit",
+        "could not pack " + std::to_string(cell_prototypes.size()) + " cells into the " +
+            (std::holds_alternative<PackingSlab>(space) ? "gap" : "tube") + ": after " +
+            std::to_string(iteration) + " iterations they were clear only at " +
+            format_number(clear_scale) + " of their size, hematocrit " +
+            format_number(packer.hematocrit_at(clear_scale)) + " (the " +
+            std::to_string(cell_prototypes.size()) + " cells at full size: " +
+            format_number(packer.hematocrit_at(1.0)) + "); lower the hematocrit or enlarge the " +
+            (std::holds_alternative<PackingSlab>(space) ? "gap" : "tube") +
+            (settings.orientation == PackingOrientation::random
+                 ? std::string(", or start the cells lined up along the axis "
+                               "(suspension.packing_orientation=axial)")
+                 : std::string()));
   }
   packer.place(1.0);
   auto packing = packer.result(iteration);
   // The packing moved a surface through another one.
-  require_no_pierced_cells(packing, prototypes, cell_prototypes, tube, false);
+  require_no_pierced_cells(packing, prototypes, cell_prototypes, space, false);
   return packing;
+}
+
+Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
+                           std::span<const std::size_t> cell_prototypes, const PackingTube& tube,
+                           const PackingSettings& settings) {
+  return pack_cells(prototypes, cell_prototypes, tube, settings);
 }
 
 }  // namespace rbcsim::cases

@@ -1,23 +1,25 @@
-// Cells packed into a straight tube to a target hematocrit (docs/physics.md, "Suspensions"):
-// force-biased shrink-then-grow packing of the true cell meshes as rigid bodies.
+// Cells packed into a straight tube or a walled slab to a target hematocrit (docs/physics.md,
+// "Suspensions"): force-biased shrink-then-grow packing of the true cell meshes as rigid bodies.
 //
 //   1. Every cell starts at a reduced scale (kStartScale of its size), at a seeded random place in
 //      the lumen and a uniformly random orientation (or lined up along the axis:
 //      PackingOrientation), and they are spread apart rigidly (below);
 //   2. then, repeatedly: overlapping cells (two vertices of different cells closer than
-//      cell_gap_um, the contact's range, across the tube's periodic x; a vertex closer than
-//      wall_gap_um to the wall) push each other apart as rigid bodies, each moved along its net
+//      cell_gap_um, the contact's range, across the space's periodic axes; a vertex closer than
+//      wall_gap_um to a wall) push each other apart as rigid bodies, each moved along its net
 //      push and turned by its net torque, a small fraction of the gap per iteration; once no
 //      cell overlaps, all cells grow by kScaleStep, until they are full size and clear.
 //
-// The hematocrit reached is measured from the placed meshes' own volumes over the lumen's
-// pi R^2 L. Cells that cannot be made to clear at full size within max_iterations are an error
-// naming the scale and hematocrit reached, never a silently lower hematocrit.
+// The hematocrit reached is measured from the placed meshes' own volumes over the space's volume
+// (the tube's pi R^2 L, the slab's gap x length x width). Cells that cannot be made to clear at
+// full size within max_iterations are an error naming the scale and hematocrit reached, never a
+// silently lower hematocrit.
 #pragma once
 
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <variant>
 #include <vector>
 
 #include "common/vec3.hpp"
@@ -31,9 +33,20 @@ struct PackingTube {
   double length_um = 0.0;  // periodic along x over [0, length); the axis at y = z = 0
 };
 
+// Between flat walls at y = -gap/2 and +gap/2, periodic along x over [0, length) and along z over
+// [0, width): the gap of a wall-bounded shear flow (sheared_suspension.hpp).
+struct PackingSlab {
+  double gap_um = 0.0;
+  double length_um = 0.0;
+  double width_um = 0.0;
+};
+
+using PackingSpace = std::variant<PackingTube, PackingSlab>;
+
 // How the cells start (suspension.packing_orientation).
 //   random: each at a random place in the lumen, in a uniformly random orientation;
-//   axial:  each with its symmetry axis (its mesh's z) along the tube's axis, spun about it at
+//   axial:  each with its symmetry axis (its mesh's z) along the tube's axis (a slab's x), spun
+//   about it at
 //           random, at one of N evenly spaced places along the axis (the cells in random order,
 //           each jittered by up to a quarter of the spacing) and at a random distance and angle
 //           off it. In a tube not much wider than a cell, randomly turned cells jam before they
@@ -61,7 +74,10 @@ inline constexpr double kScaleStep = 0.01;
 
 // Packs one cell per entry of `cell_prototypes` (an index into `prototypes`, the stress-free
 // meshes). Throws InputError naming suspension.hematocrit when the cells cannot all be placed
-// clear of each other and the wall, with the scale and hematocrit reached.
+// clear of each other and the walls, with the scale and hematocrit reached.
+Packing pack_cells(std::span<const mesh::TriangleMesh> prototypes,
+                   std::span<const std::size_t> cell_prototypes, const PackingSpace& space,
+                   const PackingSettings& settings);
 Packing pack_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
                            std::span<const std::size_t> cell_prototypes, const PackingTube& tube,
                            const PackingSettings& settings);
@@ -76,8 +92,11 @@ struct CellPose {
 
 // Places one cell per entry of `cell_prototypes` at its pose (`poses`, as many). Throws
 // InputError naming suspension.cells when a cell comes closer than settings.cell_gap_um to
-// another (across the periodic x) or to itself across the period, closer than wall_gap_um to the
+// another (across the periodic axes) or to itself across a period, closer than wall_gap_um to a
 // wall, or inside another cell; `iterations` is 0.
+Packing place_cells(std::span<const mesh::TriangleMesh> prototypes,
+                    std::span<const std::size_t> cell_prototypes, std::span<const CellPose> poses,
+                    const PackingSpace& space, const PackingSettings& settings);
 Packing place_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
                             std::span<const std::size_t> cell_prototypes,
                             std::span<const CellPose> poses, const PackingTube& tube,

@@ -5,22 +5,41 @@
 
 namespace rbcsim::cases {
 
+WallDistance tube_wall_distance(const Vec3& position_um, double radius_um) {
+  const double r_um = std::hypot(position_um.y(), position_um.z());
+  if (r_um == 0.0) return {radius_um, Vec3::Zero()};
+  return {radius_um - r_um, Vec3(0.0, -position_um.y() / r_um, -position_um.z() / r_um)};
+}
+
+WallDistance slab_wall_distance(const Vec3& position_um, double half_gap_um) {
+  if (position_um.y() >= 0.0) return {half_gap_um - position_um.y(), -Vec3::UnitY()};
+  return {half_gap_um + position_um.y(), Vec3::UnitY()};
+}
+
 void add_wall_repulsion(std::span<const Vec3> positions_um,
-                        const std::function<double(double x_um)>& radius_um,
+                        const std::function<WallDistance(const Vec3& position_um)>& wall,
                         const WallRepulsion& repulsion, std::span<Vec3> forces_pN) {
   if (repulsion.force_at_wall_pN == 0.0) return;
   if (!(repulsion.range_um > 0.0)) {
     throw std::invalid_argument("wall repulsion: the range must be > 0");
   }
   for (std::size_t v = 0; v < positions_um.size(); ++v) {
-    const Vec3& position = positions_um[v];
-    const double r_um = std::hypot(position.y(), position.z());
-    const double distance_um = radius_um(position.x()) - r_um;
-    if (distance_um >= repulsion.range_um || r_um == 0.0) continue;
+    const auto [distance_um, inward] = wall(positions_um[v]);
+    if (distance_um >= repulsion.range_um) continue;
     const double closeness = 1.0 - std::max(distance_um, 0.0) / repulsion.range_um;
-    const double magnitude_pN = repulsion.force_at_wall_pN * closeness * closeness;
-    forces_pN[v] -= magnitude_pN * Vec3(0.0, position.y(), position.z()) / r_um;
+    forces_pN[v] += repulsion.force_at_wall_pN * closeness * closeness * inward;
   }
+}
+
+void add_tube_wall_repulsion(std::span<const Vec3> positions_um,
+                             const std::function<double(double x_um)>& radius_um,
+                             const WallRepulsion& repulsion, std::span<Vec3> forces_pN) {
+  add_wall_repulsion(
+      positions_um,
+      [&radius_um](const Vec3& position) {
+        return tube_wall_distance(position, radius_um(position.x()));
+      },
+      repulsion, forces_pN);
 }
 
 }  // namespace rbcsim::cases

@@ -1,10 +1,10 @@
-// A short-range push of the membrane away from a circular tube wall. Without it a vertex that
-// reaches the wall moves with the fluid there, which is at rest (no slip): the part of the cell
-// that touches the throat sticks while the rest is carried on, and the membrane tears at its force
-// limits. In reality a lubrication film keeps the cell off the wall; at dx = 0.5 um the lattice
-// cannot resolve that film, so, as HemoCell does with its wall repulsion, a force stands in for
-// it. It acts only within `range_um` of the wall, along the inward radius:
-//     F = force_at_wall_pN * (1 - d / range_um)^2,   d = R(x) - r (distance to the wall),
+// A short-range push of the membrane away from a wall. Without it a vertex that reaches the wall
+// moves with the fluid there, which moves with the wall (no slip): the part of the cell that
+// touches it sticks while the rest is carried on, and the membrane tears at its force limits. In
+// reality a lubrication film keeps the cell off the wall; at dx = 0.5 um the lattice cannot
+// resolve that film, so, as HemoCell does with its wall repulsion, a force stands in for it. It
+// acts only within `range_um` of the wall, along the direction away from it:
+//     F = force_at_wall_pN * (1 - d / range_um)^2,   d the distance to the wall,
 // zero with zero slope at d = range_um, force_at_wall_pN at contact (and beyond, inside the wall,
 // which the stability checks refuse anyway).
 #pragma once
@@ -21,10 +21,30 @@ struct WallRepulsion {
   double range_um = 0.0;
 };
 
-// Adds the repulsion of a tube along x (axis y = z = 0, lumen radius radius_um(x)) to forces_pN,
-// one per position. Throws std::invalid_argument for a non-positive range with a non-zero force.
+// Where a point lies in a walled space: its distance to the nearest wall (negative beyond it) and
+// the unit direction away from that wall, into the space (zero where there is none, on a tube's
+// axis).
+struct WallDistance {
+  double distance_um = 0.0;
+  Vec3 inward = Vec3::Zero();
+};
+
+// A tube along x with its axis at y = z = 0: the distance R - r along the inward radius (the
+// wall taken as locally cylindrical, as at a gently varying throat).
+WallDistance tube_wall_distance(const Vec3& position_um, double radius_um);
+
+// A slab between flat walls at y = -half_gap_um and y = +half_gap_um: the nearer one.
+WallDistance slab_wall_distance(const Vec3& position_um, double half_gap_um);
+
+// Adds the repulsion of the wall that `wall` describes to forces_pN, one per position. Throws
+// std::invalid_argument for a non-positive range with a non-zero force.
 void add_wall_repulsion(std::span<const Vec3> positions_um,
-                        const std::function<double(double x_um)>& radius_um,
+                        const std::function<WallDistance(const Vec3& position_um)>& wall,
                         const WallRepulsion& repulsion, std::span<Vec3> forces_pN);
+
+// The same for a tube along x (axis y = z = 0, lumen radius radius_um(x)).
+void add_tube_wall_repulsion(std::span<const Vec3> positions_um,
+                             const std::function<double(double x_um)>& radius_um,
+                             const WallRepulsion& repulsion, std::span<Vec3> forces_pN);
 
 }  // namespace rbcsim::cases

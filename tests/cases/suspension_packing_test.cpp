@@ -123,6 +123,36 @@ TEST(SuspensionPacking, RefusesCellsPlacedTooClose) {
   EXPECT_EQ(problem(tube, {{Vec3(2, 0, 0), along_x, 0}, {Vec3(11, 0, 0), along_x, 0}}), "");
 }
 
+// Six discocytes and stomatocytes between flat walls 12 um apart, periodic over 16 um in x and
+// 12 um in z (H 0.24): every vertex the wall gap off both walls, every pair of cells the cell gap
+// apart across both periods.
+TEST(SuspensionPacking, FillsASlabClearOfBothWallsAndAcrossBothPeriods) {
+  const std::vector<mesh::TriangleMesh> prototypes{shipped_mesh("discocyte"),
+                                                   shipped_mesh("stomatocyte-II")};
+  const std::vector<std::size_t> cells{0, 0, 0, 0, 1, 1};
+  const PackingSlab slab{12.0, 16.0, 12.0};
+  const PackingSettings settings{0.75, 0.5, 2, 40000};
+  const auto packing = pack_cells(prototypes, cells, slab, settings);
+  ASSERT_EQ(packing.positions_um.size(), cells.size());
+  double volume_um3 = 0.0;
+  for (const std::size_t c : cells) volume_um3 += mesh::enclosed_volume_um3(prototypes[c]);
+  EXPECT_NEAR(packing.hematocrit, volume_um3 / (12.0 * 16.0 * 12.0), 1e-12);
+  EXPECT_GT(packing.hematocrit, 0.2);
+  for (std::size_t a = 0; a < packing.positions_um.size(); ++a) {
+    for (const Vec3& p : packing.positions_um[a]) {
+      EXPECT_LE(std::abs(p.y()), 6.0 - settings.wall_gap_um + 1e-12);
+      for (std::size_t b = a + 1; b < packing.positions_um.size(); ++b) {
+        for (const Vec3& q : packing.positions_um[b]) {
+          Vec3 d = p - q;
+          d.x() -= 16.0 * std::round(d.x() / 16.0);
+          d.z() -= 12.0 * std::round(d.z() / 12.0);
+          ASSERT_GE(d.norm(), settings.cell_gap_um) << "cells " << a << " and " << b;
+        }
+      }
+    }
+  }
+}
+
 // Twelve discocytes cannot fit a 6 um tube 12 um long (their volume alone is over the lumen's):
 // an InputError naming the hematocrit, never a packing with fewer cells.
 TEST(SuspensionPacking, RefusesATargetItCannotReach) {
