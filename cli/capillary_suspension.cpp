@@ -22,35 +22,6 @@ namespace {
 
 constexpr std::size_t kProgressIntervalSteps = 500;
 
-std::vector<std::size_t> cells_of(const std::vector<cases::SuspensionMorphology>& morphologies,
-                                  const setup::SuspensionMix& mix,
-                                  const cases::SuspensionSettings& settings, double hematocrit) {
-  const double radius_um = 0.5 * settings.tube_diameter_um;
-  std::vector<double> volumes_um3;
-  for (const auto& morphology : morphologies) {
-    volumes_um3.push_back(mesh::enclosed_volume_um3(morphology.mesh));
-  }
-  const auto counts = cases::cell_counts_for(
-      hematocrit, std::numbers::pi * radius_um * radius_um * settings.tube_length_um, mix.fractions,
-      volumes_um3);
-  std::vector<std::size_t> cells;
-  for (std::size_t m = 0; m < counts.size(); ++m) cells.insert(cells.end(), counts[m], m);
-  return cells;
-}
-
-// The kind of each cell placed by hand, as an index into the mix's names (which list the placed
-// cells' kinds in order of appearance).
-std::vector<std::size_t> placed_cells_of(const setup::SuspensionMix& mix,
-                                         const std::vector<config::CellPlacement>& placed) {
-  std::vector<std::size_t> cells;
-  for (const auto& cell : placed) {
-    const auto name = setup::placed_kind_name(cell);
-    cells.push_back(static_cast<std::size_t>(std::find(mix.names.begin(), mix.names.end(), name) -
-                                             mix.names.begin()));
-  }
-  return cells;
-}
-
 void write_tables(const std::filesystem::path& directory, const cases::SuspensionRun& run,
                   const cases::SuspensionSettings& settings) {
   std::vector<std::vector<double>> rows;
@@ -145,10 +116,13 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
   print_notices(import_notices);
   // Printed once the input has passed every check, so that bad input stays one line.
   const auto contact_notice = setup::contact_range_notice(config);
-  const auto cells =
-      settings.placed_cells.empty()
-          ? cells_of(morphologies, mix, settings, config.number("suspension.hematocrit"))
-          : placed_cells_of(mix, config.cell_list("suspension.cells"));
+  const double radius_um = 0.5 * settings.tube_diameter_um;
+  const auto cells = settings.placed_cells.empty()
+                         ? setup::packed_cell_kinds(
+                               morphologies, mix,
+                               std::numbers::pi * radius_um * radius_um * settings.tube_length_um,
+                               config.number("suspension.hematocrit"))
+                         : setup::placed_cell_kinds(mix, config.cell_list("suspension.cells"));
   std::vector<std::int32_t> kinds(cells.begin(), cells.end());
 
   const RunDirectory directory("capillary", common, config);

@@ -1,6 +1,8 @@
 // rbcsim shear: one cell in simple shear flow, swept over shear rates (paper §3.2): length,
 // breadth, deformation index, inclination, tank-treading frequency, surface smoothness and
 // mesh-scale roughness of the steady shape at each rate (paper Figs. 9-11).
+// --hematocrit H: many cells sheared between walls, their relative viscosity at each rate
+// (shear_suspension.hpp).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
@@ -31,6 +33,7 @@
 #include "setup/cell_from_config.hpp"
 #include "setup/membrane_from_config.hpp"
 #include "setup/shear_from_config.hpp"
+#include "shear_suspension.hpp"
 
 namespace rbcsim::cli::shear_command {
 namespace {
@@ -41,12 +44,13 @@ struct ShearOptions {
   std::optional<std::string> rates;
   std::optional<std::string> boundary;
   std::optional<double> max_strain;
+  std::optional<std::string> hematocrit;
+  std::optional<std::string> mix;
 };
 
 // The command's own options are --set assignments in disguise, so config.json records them.
-config::Config resolve_shear_config(const ShearOptions& options) {
-  auto common = options.common;
-  auto& request = common.config;
+config::ConfigRequest shear_request(const ShearOptions& options) {
+  auto request = options.common.config;
   if (options.rates) {
     setup::shear_rates_from(*options.rates, "--rates");  // the range's own diagnostics
     assign_option(request, "--rates", "shear.rates_per_s", *options.rates);
@@ -55,7 +59,13 @@ config::Config resolve_shear_config(const ShearOptions& options) {
   if (options.max_strain) {
     assign_option(request, "--max-strain", "shear.max_strain", format_number(*options.max_strain));
   }
-  return resolve_config(common);
+  if (options.hematocrit) {
+    assign_option(request, "--hematocrit", "suspension.hematocrit", *options.hematocrit);
+    // A suspension is sheared between walls (shear_suspension.hpp).
+    if (!options.boundary) assign_option(request, "--hematocrit", "shear.boundary", "walls");
+  }
+  if (options.mix) assign_option(request, "--mix", "suspension.mix", *options.mix);
+  return request;
 }
 
 std::string shape_file_name(std::size_t index) {
@@ -215,7 +225,12 @@ std::vector<cases::ShearPoint> ended_points(const std::vector<cases::ShearPoint>
 }
 
 void run_shear_command(const ShearOptions& options) {
-  const auto config = resolve_shear_config(options);
+  const auto request = shear_request(options);
+  const auto config = config::resolve_config(request);
+  if (wants_sheared_suspension(config)) {
+    run_sheared_suspension_command(request, config, options.common, options.checkpoint);
+    return;
+  }
   const auto settings = setup::shear_settings_from(config);
   const auto parameters = setup::membrane_parameters_from(config);
   auto cell_mesh = setup::cell_mesh_from(config);
@@ -292,6 +307,19 @@ void attach_shear(CLI::App& application) {
                                 "reported steady: false",
                                 "shear.max_strain"))
       ->type_name("STRAIN");
+  command
+      ->add_option("--hematocrit", options->hematocrit,
+                   with_default("Pack cells to this hematocrit between two sliding walls (a "
+                                "suspension: its relative viscosity at each rate; implies "
+                                "--boundary walls)",
+                                "suspension.hematocrit"))
+      ->type_name("H");
+  command
+      ->add_option("--mix", options->mix,
+                   "Morphologies of the suspension by number fraction, e.g. "
+                   "discocyte=0.8,echinocyte-III=0.2 (suspension.mix; default: all of "
+                   "--morphology)")
+      ->type_name("NAME=F,...");
   add_common_options(command, options->common);
   add_checkpoint_options(command, options->checkpoint, options->common);
   command->callback([options] { run_shear_command(*options); });

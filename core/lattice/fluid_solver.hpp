@@ -136,6 +136,8 @@ class FluidSolver {
   const FluidParameters& parameters() const { return parameters_; }
   // The rates of the outer fluid (viscosity class 0).
   RelaxationRates relaxation_rates() const { return rates_; }
+  // The rates of every viscosity class (kViscosityClasses entries); empty without a contrast.
+  std::span<const RelaxationRates> class_rates() const { return class_rates_; }
   // Kinematic viscosity (1/omega_even - 1/2) / 3 of the outer fluid.
   double viscosity() const;
   std::size_t time() const { return time_; }

@@ -7,6 +7,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "ibm/delta_kernels.hpp"
+#include "mesh/geometry.hpp"
 #include "setup/capillary_from_config.hpp"
 #include "setup/cell_from_config.hpp"
 #include "setup/membrane_from_config.hpp"
@@ -101,15 +102,37 @@ SuspensionMix suspension_mix_from(const config::Config& config) {
   return mix;
 }
 
-cases::SuspensionSettings suspension_settings_from(const config::Config& config) {
-  cases::SuspensionSettings settings;
-  settings.tube_diameter_um = config.number("suspension.tube_diameter_um");
-  settings.tube_length_um = config.number("suspension.tube_length_um");
-  settings.plasma_mean_velocity_m_per_s = config.number("suspension.plasma_mean_velocity_m_per_s");
-  settings.duration_s = config.number("suspension.duration_s");
-  settings.sample_interval_s = config.number("suspension.sample_interval_s");
+std::vector<std::size_t> packed_cell_kinds(
+    std::span<const cases::SuspensionMorphology> morphologies, const SuspensionMix& mix,
+    double volume_um3, double hematocrit) {
+  std::vector<double> volumes_um3;
+  for (const auto& morphology : morphologies) {
+    volumes_um3.push_back(mesh::enclosed_volume_um3(morphology.mesh));
+  }
+  const auto counts = cases::cell_counts_for(hematocrit, volume_um3, mix.fractions, volumes_um3);
+  std::vector<std::size_t> cells;
+  for (std::size_t m = 0; m < counts.size(); ++m) cells.insert(cells.end(), counts[m], m);
+  return cells;
+}
+
+std::vector<std::size_t> placed_cell_kinds(const SuspensionMix& mix,
+                                           const std::vector<config::CellPlacement>& placed) {
+  std::vector<std::size_t> cells;
+  for (const auto& cell : placed) {
+    const auto name = placed_kind_name(cell);
+    cells.push_back(static_cast<std::size_t>(std::find(mix.names.begin(), mix.names.end(), name) -
+                                             mix.names.begin()));
+  }
+  return cells;
+}
+
+namespace {
+
+// What the tube's and the gap's suspensions share: the walls' push, the contact, the packing and
+// the cells placed by hand.
+template <class Settings>
+void read_interactions(const config::Config& config, Settings& settings) {
   settings.averaging_fraction = config.number("suspension.averaging_fraction");
-  settings.profile_rings = static_cast<std::size_t>(config.integer("suspension.profile_rings"));
   for (const auto& cell : config.cell_list("suspension.cells")) {
     const auto vector = [](const std::array<double, 3>& v) { return Vec3(v[0], v[1], v[2]); };
     settings.placed_cells.push_back({vector(cell.centre_um), vector(cell.axis), cell.spin_deg});
@@ -128,9 +151,51 @@ cases::SuspensionSettings suspension_settings_from(const config::Config& config)
                                      : cases::PackingOrientation::random;
   settings.packing.max_iterations =
       static_cast<std::size_t>(config.integer("suspension.packing_max_iterations"));
+}
+
+}  // namespace
+
+cases::SuspensionSettings suspension_settings_from(const config::Config& config) {
+  cases::SuspensionSettings settings;
+  settings.tube_diameter_um = config.number("suspension.tube_diameter_um");
+  settings.tube_length_um = config.number("suspension.tube_length_um");
+  settings.plasma_mean_velocity_m_per_s = config.number("suspension.plasma_mean_velocity_m_per_s");
+  settings.duration_s = config.number("suspension.duration_s");
+  settings.sample_interval_s = config.number("suspension.sample_interval_s");
+  settings.profile_rings = static_cast<std::size_t>(config.integer("suspension.profile_rings"));
+  read_interactions(config, settings);
   settings.fluid_tolerance = config.number("capillary.fluid_tolerance");
   settings.fluid_max_steps = static_cast<std::size_t>(config.integer("capillary.fluid_max_steps"));
   return settings;
+}
+
+cases::ShearedSuspensionSettings sheared_suspension_settings_from(const config::Config& config,
+                                                                  double diameter_um,
+                                                                  double simulated_rate_per_s) {
+  cases::ShearedSuspensionSettings settings;
+  settings.gap_um = config.number("shear.gap_diameters") * diameter_um;
+  settings.length_um = config.number("shear.width_diameters") * diameter_um;
+  settings.width_um = settings.length_um;
+  settings.shear_rate_per_s = simulated_rate_per_s;
+  settings.strain = config.number("suspension.strain");
+  settings.sample_interval_strain = config.number("suspension.sample_interval_strain");
+  read_interactions(config, settings);
+  return settings;
+}
+
+SuspensionCompression sheared_suspension_compression_from(const config::Config& config,
+                                                          double rate_per_s, double diameter_um) {
+  SuspensionCompression compression;
+  const double radius_m = 0.5e-6 * diameter_um;
+  compression.physical_reynolds_number =
+      rate_per_s * radius_m * radius_m /
+      config.number("physics.plasma_kinematic_viscosity_m2_per_s");
+  compression.simulated_reynolds_number = compression.physical_reynolds_number;
+  if (!config.boolean("shear.viscosity_scaling")) return compression;
+  const double limit = config.number("shear.max_reynolds_number");
+  compression.factor = low_reynolds_compression_factor(compression.physical_reynolds_number, limit);
+  if (compression.factor != 1.0) compression.simulated_reynolds_number = limit;
+  return compression;
 }
 
 std::optional<std::string> contact_range_notice(const config::Config& config) {

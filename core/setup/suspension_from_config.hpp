@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cases/sheared_suspension.hpp"
 #include "cases/suspension_case.hpp"
 #include "config/config.hpp"
 
@@ -27,7 +28,23 @@ SuspensionMix suspension_mix_from(const config::Config& config);
 // "discocyte", or "discocyte (cells/bent.stl)" for a cell of that mesh file.
 std::string placed_kind_name(const config::CellPlacement& cell);
 
+// One index into the mix's morphologies per cell: packed, `hematocrit` of `volume_um3` by the mix's
+// number fractions (cases::cell_counts_for), morphology after morphology.
+std::vector<std::size_t> packed_cell_kinds(
+    std::span<const cases::SuspensionMorphology> morphologies, const SuspensionMix& mix,
+    double volume_um3, double hematocrit);
+// The same for cells placed by hand (suspension.cells), in their order.
+std::vector<std::size_t> placed_cell_kinds(const SuspensionMix& mix,
+                                           const std::vector<config::CellPlacement>& placed);
+
 cases::SuspensionSettings suspension_settings_from(const config::Config& config);
+
+// The sheared suspension (`rbcsim shear --hematocrit H`) at one simulated rate: the gap
+// shear.gap_diameters and the periodic length and width shear.width_diameters times
+// `diameter_um` (the largest cell's), the interactions as the tube's.
+cases::ShearedSuspensionSettings sheared_suspension_settings_from(const config::Config& config,
+                                                                  double diameter_um,
+                                                                  double simulated_rate_per_s);
 
 // A notice when suspension.contact_range_um is shorter than the immersed-boundary kernel's width
 // (ibm.kernel's support times lattice.spacing_um): two membranes the contact holds closer than
@@ -52,6 +69,11 @@ struct SuspensionCompression {
 };
 SuspensionCompression suspension_compression_from(const config::Config& config);
 config::Config compressed_suspension_config(const config::Config& config, double factor);
+// The same for a sheared suspension at `rate_per_s` (shear.viscosity_scaling, up to
+// shear.max_reynolds_number, Re = rate R^2 / nu with R half of `diameter_um`); the simulated
+// rate is rate x factor, times divided by it as above (compressed_suspension_config).
+SuspensionCompression sheared_suspension_compression_from(const config::Config& config,
+                                                          double rate_per_s, double diameter_um);
 // Times back to physical ones (x s), velocities and flow rates (/ s), the gradient (/ s^2 x s).
 void to_physical_units(cases::SuspensionRun& run, double factor);
 

@@ -3,6 +3,7 @@
 // diagnostics.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -147,6 +148,68 @@ TEST(CliShear, HeadlineIsTheHighestRateThatFinished) {
   // One strain is too short for rate 0 to be steady: unsteady, but not failed.
   EXPECT_EQ(rates[0]["steady"], false);
   EXPECT_EQ(headline["unsteady_rate_count"], 1);
+}
+
+}  // namespace
+
+namespace {
+
+constexpr const char* kCoarseSuspension =
+    "shear --set mesh.subdivisions=2 --set mesh.method=parametric "
+    "--set lattice.spacing_um=1 --set suspension.contact_range_um=1.75 ";
+
+// --hematocrit: cells packed between sliding walls, one run per rate, their relative viscosity.
+TEST(CliShear, ASuspensionBetweenWallsWritesItsViscosityPerRate) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const auto result =
+      run_rbcsim(std::string(kCoarseSuspension) +
+                     "--hematocrit 0.1 --rates 200 --set suspension.strain=1 --threads 1 --json "
+                     "--output '" +
+                     run_dir.string() + "'",
+                 scratch.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  // The contact acts within the kernel's 2 um at dx 1 um: the notice says so.
+  EXPECT_NE(result.err.find("suspension.contact_range_um 1.75 um"), std::string::npos)
+      << result.err;
+  const auto printed = printed_run_result(result, run_dir, "shear");
+  const auto& section = printed["sheared_suspension"];
+  EXPECT_EQ(section["boundary"], "walls");
+  ASSERT_EQ(section["rates"].size(), 1u);
+  const auto& rate = section["rates"][0];
+  EXPECT_EQ(rate["shear_rate_per_s"], 200.0);
+  EXPECT_GT(rate["cells"].get<int>(), 3);
+  EXPECT_NEAR(rate["hematocrit"].get<double>(), 0.1, 0.02);  // whole cells
+  EXPECT_GT(rate["relative_viscosity"].get<double>(), 1.0);
+  EXPECT_EQ(rate["samples_with_pierced_cells"], 0);
+  EXPECT_NEAR(rate["strain"].get<double>(), 1.0, 0.01);
+  EXPECT_EQ(printed["headline"]["relative_viscosity"], rate["relative_viscosity"]);
+  const auto config = read_json(run_dir / "config.json");
+  EXPECT_EQ(config["shear"]["boundary"], "walls");  // implied by --hematocrit
+  const auto table = rbcsim::io::read_csv_file(run_dir / "sheared_suspension.csv");
+  EXPECT_EQ(table.numbers("shear_rate_per_s"), (std::vector<double>{200}));
+  const auto samples = rbcsim::io::read_csv_file(run_dir / "rate_000/suspension_timeseries.csv");
+  EXPECT_EQ(samples.numbers("strain").size(), 11u);  // every 0.1 of strain, from 0
+  EXPECT_TRUE(fs::exists(run_dir / "rate_000/cells_timeseries.csv"));
+  EXPECT_TRUE(fs::exists(run_dir / "rate_000/cells.pvd"));
+}
+
+TEST(CliShear, ABadSuspensionExitsTwoWithOneLineAndNoRunDirectory) {
+  const ScratchDirectory scratch;
+  const auto out = (scratch.path() / "run").string();
+  const auto expect_refused = [&](const std::string& arguments, const std::string& key) {
+    const auto result = run_rbcsim(
+        std::string(kCoarseSuspension) + arguments + " --output '" + out + "'", scratch.path());
+    EXPECT_EQ(result.exit_code, 2) << arguments;
+    EXPECT_EQ(result.err.rfind("rbcsim: error: " + key + ": ", 0), 0u) << result.err;
+    EXPECT_EQ(std::count(result.err.begin(), result.err.end(), '\n'), 1) << result.err;
+    EXPECT_FALSE(fs::exists(out)) << arguments;
+  };
+  expect_refused("--hematocrit 0.1 --boundary lees-edwards", "shear.boundary");
+  expect_refused("--hematocrit 0.1 --rates 0,200", "shear.rates_per_s");
+  expect_refused("--hematocrit 0.1 --checkpoint-every 100", "--checkpoint-every");
+  expect_refused("--hematocrit 0.69 --rates 200 --set suspension.packing_max_iterations=200",
+                 "suspension.hematocrit");  // cannot be packed
 }
 
 }  // namespace

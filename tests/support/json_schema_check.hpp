@@ -1,5 +1,5 @@
 // A JSON Schema check for the tests: the keywords the shipped schemas use (type, enum, const,
-// minimum, required, properties, additionalProperties, items, allOf, if/then, and $ref to a
+// minimum, required, properties, additionalProperties, items, allOf, if/then, not, and $ref to a
 // definition in the same document, "#/$defs/<name>"), which is enough to
 // hold a command's output to schemas/*.schema.json. Returns the problems found, each as
 // "<JSON pointer>: <what>"; empty when the document conforms.
@@ -87,6 +87,12 @@ inline void check(const json& value, const json& schema, const std::string& at, 
     }
   }
   for (const auto& part : schema.value("allOf", json::array())) check(value, part, at, checker);
+  if (schema.contains("not")) {
+    std::vector<std::string> negated;
+    Checker negated_checker{checker.root, negated};
+    check(value, schema["not"], at, negated_checker);
+    if (negated.empty()) problems.push_back(at + ": matches a schema it must not (\"not\")");
+  }
   if (schema.contains("if")) {
     std::vector<std::string> condition;
     Checker condition_checker{checker.root, condition};

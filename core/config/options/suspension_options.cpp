@@ -1,3 +1,4 @@
+#include "cases/sheared_suspension.hpp"
 #include "cases/suspension_case.hpp"
 #include "config/options/option_areas.hpp"
 
@@ -6,20 +7,23 @@ namespace {
 
 // The defaults come from the case's settings struct: one source of truth.
 const cases::SuspensionSettings kSuspensionDefaults{};
+const cases::ShearedSuspensionSettings kShearedDefaults{};
 
 }  // namespace
 
 void add_suspension_options(OptionTable& table) {
   table
       .add_number("suspension.hematocrit", "", 0.0,
-                  "Tube hematocrit the cells are packed to in `capillary --geometry tube` "
-                  "(cell volume over lumen volume); 0: no suspension.")
+                  "Hematocrit the cells are packed to (cell volume over the space's volume): the "
+                  "tube's in `capillary --geometry tube`, the gap's in `shear --hematocrit`; 0: "
+                  "no suspension.")
       .at_least(0.0)
       .at_most(0.7);
   table.add_cell_list(
       "suspension.cells", morphology_choices(),
       "Cells placed by hand instead of packed to suspension.hematocrit: each a morphology, its "
-      "centroid (centre_um, the tube's axis along x at y = z = 0), its symmetry axis and a spin.");
+      "centroid (centre_um: the tube's axis along x at y = z = 0; in shear, y = 0 at mid-gap, "
+      "x and z from 0 to the box's length and width), its symmetry axis and a spin.");
   table.add_string("suspension.mix", "",
                    "Morphologies of the suspension's cells, as number fractions summing to 1: "
                    "discocyte=0.8,echinocyte-III=0.2. Empty: all of the configured morphology.");
@@ -42,6 +46,14 @@ void add_suspension_options(OptionTable& table) {
   table
       .add_number("suspension.sample_interval_s", "s", 2e-4,
                   "Interval of the whole-flow and per-cell samples.")
+      .above(0.0);
+  table
+      .add_number("suspension.strain", "", kShearedDefaults.strain,
+                  "`shear --hematocrit`: how long each rate runs, in strain (rate x time).")
+      .above(0.0);
+  table
+      .add_number("suspension.sample_interval_strain", "", kShearedDefaults.sample_interval_strain,
+                  "`shear --hematocrit`: interval of the stress and per-cell samples, in strain.")
       .above(0.0);
   table
       .add_number("suspension.averaging_fraction", "", kSuspensionDefaults.averaging_fraction,
