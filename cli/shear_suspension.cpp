@@ -15,6 +15,7 @@
 #include "io/csv_table.hpp"
 #include "io/pvd_collection.hpp"
 #include "mesh/geometry.hpp"
+#include "report/reference_data.hpp"
 #include "run_directory.hpp"
 #include "setup/coupling_from_config.hpp"
 #include "setup/shear_from_config.hpp"
@@ -143,6 +144,8 @@ nlohmann::ordered_json rate_json(const RatePoint& point) {
       {"plasma_stress_Pa", run.plasma_stress_Pa},
       {"relative_viscosity", run.relative_viscosity},
       {"relative_viscosity_sd", run.relative_viscosity_sd},
+      {"pries1992_large_tube_relative_viscosity",
+       report::pries1992_large_tube_relative_viscosity(run.packed_hematocrit)},
       {"near_wall_relative_viscosity", run.near_wall_relative_viscosity},
       {"averaged_samples", run.averaged_samples},
       {"steps", run.steps},
@@ -165,6 +168,10 @@ void print_summary(const std::vector<RatePoint>& points, const setup::Suspension
   std::printf("gap %.4g um, box %.4g x %.4g um (periodic), %zu cells, hematocrit %.4f\n",
               first.gap_um, first.length_um, first.width_um, first.cell_morphologies.size(),
               first.packed_hematocrit);
+  std::printf(
+      "high-shear bulk blood at this hematocrit (Pries et al. 1992, wide-tube limit): "
+      "relative viscosity %.4f\n",
+      report::pries1992_large_tube_relative_viscosity(first.packed_hematocrit));
   std::printf("%10s %10s %9s %10s %9s %10s %8s %s\n", "rate_1/s", "sim_rate", "Re", "rel_visc",
               "sd", "near_wall", "strain", "status");
   for (const auto& point : points) {

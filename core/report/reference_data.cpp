@@ -1,6 +1,7 @@
 #include "report/reference_data.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -73,6 +74,10 @@ double pries1992_relative_apparent_viscosity(double diameter_um, double discharg
   const double shape = (0.8 + std::exp(-0.075 * d)) * (large_tube - 1.0) + large_tube;
   return 1.0 + (at_045 - 1.0) * (std::pow(1.0 - discharge_hematocrit, shape) - 1.0) /
                    (std::pow(1.0 - 0.45, shape) - 1.0);
+}
+
+double pries1992_large_tube_relative_viscosity(double hematocrit) {
+  return pries1992_relative_apparent_viscosity(std::numeric_limits<double>::infinity(), hematocrit);
 }
 
 double pries1990_tube_to_discharge_hematocrit(double diameter_um, double discharge_hematocrit) {

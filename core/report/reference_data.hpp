@@ -27,6 +27,10 @@ const StretchReference& mills2004_stretch();
 // and the discharge hematocrit H_D (fraction).
 double pries1992_relative_apparent_viscosity(double diameter_um, double discharge_hematocrit);
 double pries1990_tube_to_discharge_hematocrit(double diameter_um, double discharge_hematocrit);
+// The same fit's limit in a tube much wider than a cell (D -> infinity: eta_rel at 0.45 = 3.2,
+// exponent C = -0.8): the high-shear viscosity of bulk blood relative to plasma at hematocrit H,
+// the scale against which a sheared suspension's relative viscosity is set.
+double pries1992_large_tube_relative_viscosity(double hematocrit);
 
 // The rows of share/reference/pries_tube_flow.csv (computed there from the same fits), so the
 // formulas above can be checked against an implementation of their own.

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -181,6 +182,9 @@ TEST(CliShear, ASuspensionBetweenWallsWritesItsViscosityPerRate) {
   EXPECT_GT(rate["cells"].get<int>(), 3);
   EXPECT_NEAR(rate["hematocrit"].get<double>(), 0.1, 0.02);  // whole cells
   EXPECT_GT(rate["relative_viscosity"].get<double>(), 1.0);
+  const double h = rate["hematocrit"].get<double>();  // Pries' wide-tube limit, by hand
+  EXPECT_NEAR(rate["pries1992_large_tube_relative_viscosity"].get<double>(),
+              1.0 + 2.2 * (std::pow(1.0 - h, -0.8) - 1.0) / (std::pow(0.55, -0.8) - 1.0), 1e-12);
   EXPECT_EQ(rate["samples_with_pierced_cells"], 0);
   EXPECT_NEAR(rate["strain"].get<double>(), 1.0, 0.01);
   EXPECT_EQ(printed["headline"]["relative_viscosity"], rate["relative_viscosity"]);

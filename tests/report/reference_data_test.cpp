@@ -1,6 +1,8 @@
 // The Mills et al. (2004) stretch data the report plots, as embedded in the binary.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <algorithm>
 
 #include "report/reference_data.hpp"
@@ -66,6 +68,20 @@ TEST(PriesTubeFlow, FitsShowTheFahraeusAndFahraeusLindqvistEffects) {
     EXPECT_LT(pries1990_tube_to_discharge_hematocrit(diameter_um, 0.45), 0.9) << diameter_um;
   }
   EXPECT_NEAR(pries1990_tube_to_discharge_hematocrit(2000.0, 0.45), 1.0, 1e-3);
+}
+
+// The wide-tube limit, written out by hand: 1 + 2.2 ((1 - H)^-0.8 - 1) / (0.55^-0.8 - 1); 3.2 at
+// H 0.45 by construction, 1 without cells, and a 2000 um tube (the widest of Pries' data) within
+// 1e-3 of it (its mu_0.45 is 3.2 - 2.44 exp(-0.06 x 2000^0.645) = 3.1992).
+TEST(TubeFlowReference, TheWideTubeLimitIsTheBulkFit) {
+  using rbcsim::report::pries1992_large_tube_relative_viscosity;
+  for (const double h : {0.0, 0.1, 0.3, 0.45}) {
+    const double by_hand =
+        1.0 + 2.2 * (std::pow(1.0 - h, -0.8) - 1.0) / (std::pow(0.55, -0.8) - 1.0);
+    EXPECT_NEAR(pries1992_large_tube_relative_viscosity(h), by_hand, 1e-12) << h;
+    EXPECT_NEAR(pries1992_relative_apparent_viscosity(2000.0, h), by_hand, 1e-3) << h;
+  }
+  EXPECT_NEAR(pries1992_large_tube_relative_viscosity(0.45), 3.2, 1e-12);
 }
 
 // The cell-free-layer rows with their status: three in-vivo values read in a source, two
