@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cases/shear_case.hpp"
+#include "cases/shear_observables.hpp"
 #include "cases/sheared_suspension.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -32,12 +33,8 @@ constexpr std::size_t kShearProgressIntervalSteps = 500;
 double reference_diameter_um(const std::vector<cases::SuspensionMorphology>& morphologies) {
   double diameter_um = 0.0;
   for (const auto& morphology : morphologies) {
-    const auto& positions = morphology.mesh.positions_um;
-    for (std::size_t a = 0; a < positions.size(); ++a) {
-      for (std::size_t b = a + 1; b < positions.size(); ++b) {
-        diameter_um = std::max(diameter_um, (positions[a] - positions[b]).norm());
-      }
-    }
+    diameter_um =
+        std::max(diameter_um, cases::largest_vertex_distance_um(morphology.mesh.positions_um));
   }
   return diameter_um;
 }

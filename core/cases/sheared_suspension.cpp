@@ -240,14 +240,10 @@ ShearedSuspensionRun run_sheared_suspension(std::span<const SuspensionMorphology
   simulation.add_stop_criterion(
       coupling::stop_at_time(settings.strain / settings.shear_rate_per_s));
   if (configure) configure(simulation);
-  try {
-    run.stop_reason = simulation.run().stop_reason;
-  } catch (const Interrupted& interrupted) {
-    run.interrupted = true;
-    run.stop_reason = run.failure = interrupted.what();
-  } catch (const RuntimeFailure& failure) {
-    run.failure = failure.what();
-  }
+  const auto end = run_to_end(simulation);
+  run.stop_reason = end.stop_reason;
+  run.failure = end.failure;
+  run.interrupted = end.interrupted;
   run.steps = simulation.time_step();
   run.time_s = simulation.time_s();
   run.close_contact_steps = simulation.close_contact_steps();

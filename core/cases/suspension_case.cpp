@@ -399,6 +399,19 @@ void add_suspension_walls(coupling::CoupledSimulation& simulation,
   });
 }
 
+SuspensionEnd run_to_end(coupling::CoupledSimulation& simulation) {
+  SuspensionEnd end;
+  try {
+    end.stop_reason = simulation.run().stop_reason;
+  } catch (const Interrupted& interrupted) {
+    end.interrupted = true;
+    end.stop_reason = end.failure = interrupted.what();
+  } catch (const RuntimeFailure& failure) {
+    end.failure = failure.what();
+  }
+  return end;
+}
+
 SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
                              std::span<const std::size_t> cell_morphologies,
                              const SuspensionPhysics& physics, const SuspensionSettings& settings,
@@ -482,14 +495,10 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
     run.capped_contact_steps = simulation.capped_contact_steps();
     run.force_capped_steps = simulation.capped_steps_per_cell();
   };
-  try {
-    run.stop_reason = simulation.run().stop_reason;
-  } catch (const Interrupted& interrupted) {
-    run.interrupted = true;
-    run.stop_reason = run.failure = interrupted.what();
-  } catch (const RuntimeFailure& failure) {
-    run.failure = failure.what();
-  }
+  const auto end = run_to_end(simulation);
+  run.stop_reason = end.stop_reason;
+  run.failure = end.failure;
+  run.interrupted = end.interrupted;
   record_end();
   run.averages = averages_of(run.samples, run.time_s, settings.averaging_fraction);
   return run;

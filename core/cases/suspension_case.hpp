@@ -158,6 +158,15 @@ void add_suspension_walls(coupling::CoupledSimulation& simulation,
                           std::span<const std::size_t> cell_morphologies,
                           const WallRepulsion& per_um2, const SuspensionWall& wall);
 
+// Runs the simulation to its stop: its stop reason, or the failure that ended it (a runtime
+// failure, or an interruption, which also sets `interrupted`). What both suspensions report.
+struct SuspensionEnd {
+  std::string stop_reason;
+  std::string failure;
+  bool interrupted = false;
+};
+SuspensionEnd run_to_end(coupling::CoupledSimulation& simulation);
+
 // The number of cells of each morphology that fills a lumen of volume_um3 to `hematocrit` with
 // number fractions `fractions` (summing to 1): N = round(H V / sum_m f_m V_m) cells, split by
 // largest remainders. Throws InputError naming suspension.hematocrit when N is 0.
