@@ -1,5 +1,6 @@
 #include "coupling/stability.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/format.hpp"
@@ -11,9 +12,38 @@ constexpr std::array<char, 3> kAxisNames = {'x', 'y', 'z'};
 
 std::string vertex_label(std::size_t vertex) { return "vertex " + std::to_string(vertex); }
 
+// std::lround's result (halves away from zero) without its library call, which the portable
+// build cannot inline: coordinate - trunc(coordinate) is exact in floating point. The caller has
+// checked that the coordinate is finite and, on a bounded axis, inside the grid; a periodic one
+// stays far below 2^31 spacings.
+int round_half_away_from_zero(double coordinate) {
+  auto whole = static_cast<int>(coordinate);
+  const double fraction = coordinate - static_cast<double>(whole);
+  if (fraction >= 0.5) ++whole;
+  if (fraction <= -0.5) --whole;
+  return whole;
+}
+
 // The node nearest to `position` along one axis, wrapped on a periodic axis; -1 outside.
 int nearest_node(double coordinate, int extent, bool periodic) {
-  return ibm::wrap_or_drop(static_cast<int>(std::lround(coordinate)), extent, periodic);
+  return ibm::wrap_or_drop(round_half_away_from_zero(coordinate), extent, periodic);
+}
+
+// True when no vertex can fail find_vertex_motion_problem: one pass without branches or square
+// roots (the checks run every step: docs/performance.md). The sum turns NaN when any position or
+// velocity is not finite (0 x inf is NaN); the bound sits just below the limit, so a step at the
+// limit's last digit goes to the exact test.
+bool vertex_motion_clearly_fine(std::span<const Vec3> previous_lu,
+                                std::span<const Vec3> positions_lu,
+                                std::span<const Vec3> velocities_lu, double max_step_lu) {
+  double poison = 0.0;
+  double largest_step_squared = 0.0;
+  for (std::size_t v = 0; v < positions_lu.size(); ++v) {
+    poison += 0.0 * (positions_lu[v].sum() + velocities_lu[v].sum());
+    largest_step_squared =
+        std::max(largest_step_squared, (positions_lu[v] - previous_lu[v]).squaredNorm());
+  }
+  return std::isfinite(poison) && largest_step_squared < (1.0 - 1e-12) * max_step_lu * max_step_lu;
 }
 
 }  // namespace
@@ -22,6 +52,9 @@ std::optional<std::string> find_vertex_motion_problem(std::span<const Vec3> prev
                                                       std::span<const Vec3> positions_lu,
                                                       std::span<const Vec3> velocities_lu,
                                                       double max_step_lu) {
+  if (vertex_motion_clearly_fine(previous_lu, positions_lu, velocities_lu, max_step_lu)) {
+    return std::nullopt;
+  }
   for (std::size_t v = 0; v < positions_lu.size(); ++v) {
     if (!velocities_lu[v].allFinite()) {
       return vertex_label(v) + ": non-finite fluid velocity interpolated (the flow is unstable)";
@@ -40,12 +73,15 @@ std::optional<std::string> find_vertex_motion_problem(std::span<const Vec3> prev
 std::optional<std::string> find_domain_exit(std::span<const Vec3> positions_lu,
                                             const ibm::GridView& grid,
                                             const std::uint8_t* solid_mask) {
+  const std::array<int, 3> extents = {grid.nx, grid.ny, grid.nz};
+  const std::array<bool, 3> periodic_axes = {grid.periodic_x, grid.periodic_y, grid.periodic_z};
   for (std::size_t v = 0; v < positions_lu.size(); ++v) {
     std::array<int, 3> node{};
     for (int axis = 0; axis < 3; ++axis) {
-      const int extent = ibm::axis_extent(grid, axis);
-      const bool periodic = ibm::axis_periodic(grid, axis);
+      const int extent = extents[axis];
+      const bool periodic = periodic_axes[axis];
       const double coordinate = positions_lu[v][axis];
+      if (!std::isfinite(coordinate)) return vertex_label(v) + ": non-finite position";
       if (!periodic && !(coordinate >= 0.0 && coordinate <= extent - 1.0)) {
         return vertex_label(v) + " left the domain along " + kAxisNames[axis] + " (at " +
                format_number(coordinate) + " dx; nodes 0 to " + std::to_string(extent - 1) + ")";

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -180,6 +181,34 @@ TEST(StabilityChecks, VertexMotionProblems) {
   nan_velocity[0].x() = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(find_vertex_motion_problem(previous, moved, nan_velocity, 0.5).value(),
             "vertex 0: non-finite fluid velocity interpolated (the flow is unstable)");
+}
+
+// The one-pass screen in front of the exact loop must not change a verdict at the limit's edge.
+TEST(StabilityChecks, VertexMotionAtTheLimitAndNonFinitePositions) {
+  const std::vector<Vec3> previous = {Vec3(1, 1, 1), Vec3(2, 2, 2)};
+  const std::vector<Vec3> slow = {Vec3(0.1, 0, 0), Vec3(0, 0.1, 0)};
+  const std::vector<Vec3> at_limit = {Vec3(1, 1, 1), Vec3(2.5, 2, 2)};
+  EXPECT_FALSE(find_vertex_motion_problem(previous, at_limit, slow, 0.5));
+  const std::vector<Vec3> beyond = {Vec3(1, 1, 1), Vec3(std::nextafter(2.5, 3.0), 2, 2)};
+  EXPECT_TRUE(find_vertex_motion_problem(previous, beyond, slow, 0.5));
+  const std::vector<Vec3> infinite = {Vec3(1, 1, std::numeric_limits<double>::infinity()),
+                                      Vec3(2, 2, 2)};
+  EXPECT_EQ(find_vertex_motion_problem(previous, infinite, slow, 0.5).value(),
+            "vertex 0: non-finite position");
+}
+
+// A vertex half-way between two nodes belongs to the one farther from zero (std::lround's rule).
+TEST(StabilityChecks, NearestNodeRoundsHalvesAwayFromZero) {
+  const ibm::GridView grid{4, 4, 4, true, false, true};
+  std::vector<std::uint8_t> mask(64, 0);
+  mask[ibm::node_index(grid, 3, 1, 1)] = 1;
+  EXPECT_TRUE(find_domain_exit(std::vector<Vec3>{Vec3(-0.5, 1.0, 1.0)}, grid, mask.data()));
+  EXPECT_TRUE(find_domain_exit(std::vector<Vec3>{Vec3(2.5, 1.0, 1.0)}, grid, mask.data()));
+  EXPECT_FALSE(find_domain_exit(std::vector<Vec3>{Vec3(2.4999, 1.0, 1.0)}, grid, mask.data()));
+  EXPECT_FALSE(find_domain_exit(std::vector<Vec3>{Vec3(-0.4999, 1.0, 1.0)}, grid, mask.data()));
+  EXPECT_EQ(
+      find_domain_exit(std::vector<Vec3>{Vec3(std::nan(""), 1.0, 1.0)}, grid, mask.data()).value(),
+      "vertex 0: non-finite position");
 }
 
 TEST(StabilityChecks, DomainExitAlongNonPeriodicAxesAndIntoSolidNodes) {
