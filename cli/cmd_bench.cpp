@@ -17,8 +17,11 @@
 #include <string>
 #include <vector>
 
+#include "bench_paper_cases.hpp"
 #include "bench_reference.hpp"
+#include "bench_table.hpp"
 #include "command_registry.hpp"
+#include "common/errors.hpp"
 #include "common_options.hpp"
 #include "contact/cell_repulsion.hpp"
 #include "coupling/benchmark.hpp"
@@ -60,6 +63,7 @@ struct BenchOptions {
   std::vector<int> large_lattice;
   std::vector<int> suspension_cell_counts = kDefaultSuspensionCellCounts;
   std::optional<std::filesystem::path> reference_file;
+  std::string paper_cases;  // --paper-cases: empty, "all" or names
 };
 
 // figure / ours for a time, ours / figure for a throughput: > 1 when rbcsim is faster.
@@ -245,23 +249,8 @@ Json machine_json(const coupling::MachineDescription& machine) {
           {"last_level_cache_bytes", machine.last_level_cache_bytes}};
 }
 
-std::string fixed(double value, int decimals) {
-  std::array<char, 32> text{};
-  std::snprintf(text.data(), text.size(), "%.*f", decimals, value);
-  return text.data();
-}
-
 std::string number_or_dash(const Json& value, int decimals, const std::string& suffix = "") {
   return value.is_null() ? "-" : fixed(value.get<double>(), decimals) + suffix;
-}
-
-// One row of the text table: a label and one column per thread count.
-void print_row(const std::string& label, const std::vector<std::string>& cells,
-               const std::string& note = "") {
-  std::printf("%-44s", label.c_str());
-  for (const auto& cell : cells) std::printf("%14s", cell.c_str());
-  if (!note.empty()) std::printf("   %s", note.c_str());
-  std::printf("\n");
 }
 
 template <typename Cell>
@@ -410,7 +399,50 @@ Json reference_json(const BenchReference& reference) {
       {"fluid_mlups_40x40x20", per_threads(reference.fluid_mlups_40x40x20)}};
 }
 
+// The bench's --config, --preset and --set, for the paper cases' command lines.
+std::vector<std::string> forwarded_config_arguments(const config::ConfigRequest& request) {
+  std::vector<std::string> arguments;
+  for (const auto& file : request.files)
+    arguments.insert(arguments.end(), {"--config", file.string()});
+  if (request.preset) arguments.insert(arguments.end(), {"--preset", *request.preset});
+  for (const auto& assignment : request.assignments) {
+    arguments.insert(arguments.end(), {"--set", assignment});
+  }
+  return arguments;
+}
+
+// The paper cases' request, checked before a minute of measurements: names and --output.
+std::optional<PaperCaseRequest> paper_case_request(const BenchOptions& options) {
+  if (options.paper_cases.empty()) return std::nullopt;
+  PaperCaseRequest request;
+  request.names = parse_paper_case_names(options.paper_cases);
+  if (options.common.output_directory.empty()) {
+    throw InputError("--paper-cases", "needs --output DIR (each case's run directory goes there)");
+  }
+  request.directory = options.common.output_directory / "paper_cases";
+  request.forwarded_arguments = forwarded_config_arguments(options.common.config);
+  request.progress = !options.common.quiet;
+  return request;
+}
+
+// Runs that did not end with exit 0, for the bench's own failure after everything is written.
+std::vector<std::string> failed_paper_case_runs(const Json& entries) {
+  std::vector<std::string> failed;
+  for (const auto& entry : entries) {
+    for (const auto& run : entry["runs"]) {
+      for (const char* which : {"now", "before"}) {
+        const auto& measured = run[which];
+        if (measured.is_null() || measured["exit_code"] == 0) continue;
+        failed.push_back(measured["directory"].get<std::string>() + " (exit " +
+                         measured["exit_code"].dump() + ")");
+      }
+    }
+  }
+  return failed;
+}
+
 void run_bench(const BenchOptions& options) {
+  auto paper_request = paper_case_request(options);
   const auto machine = coupling::describe_machine();
   const auto setup = bench_setup(options, machine);
   const int all_threads =
@@ -425,6 +457,13 @@ void run_bench(const BenchOptions& options) {
     }
     runs.push_back(measure_at(threads, setup));
   }
+  Json paper_cases = Json::array();
+  if (paper_request) {
+    paper_request->thread_counts = thread_counts;
+    auto discocyte_request = options.common.config;
+    discocyte_request.morphology = "discocyte";
+    paper_cases = run_paper_cases(config::resolve_config(discocyte_request), *paper_request);
+  }
   const Json report = {{"machine", machine_json(machine)},
                        {"ibm_kernel", setup.ibm_kernel},
                        {"cytoplasm_viscosity_ratio", setup.cytoplasm.viscosity_ratio},
@@ -433,7 +472,8 @@ void run_bench(const BenchOptions& options) {
                        {"targets",
                         {{"roofline_fraction_large_lattice", kRooflineTarget},
                          {"coupled_ms_per_step_one_core", kCoupledTargetMsOneCore}}},
-                       {"runs", runs}};
+                       {"runs", runs},
+                       {"paper_cases", paper_cases}};
   if (!options.common.output_directory.empty()) {
     std::filesystem::create_directories(options.common.output_directory);
     io::write_text_atomically(options.common.output_directory / "bench.json",
@@ -443,6 +483,12 @@ void run_bench(const BenchOptions& options) {
     std::cout << report.dump(2) << '\n';
   } else {
     print_text(report, options.common.verbose);
+    if (!paper_cases.empty()) print_paper_cases(paper_cases);
+  }
+  if (const auto failed = failed_paper_case_runs(paper_cases); !failed.empty()) {
+    std::string list;
+    for (const auto& run : failed) list += (list.empty() ? "" : ", ") + run;
+    throw RuntimeFailure("bench: paper case runs failed: " + list + "; their logs end in .log");
   }
 }
 
@@ -472,6 +518,13 @@ void attach_bench_command(CLI::App& application) {
                    "were measured on (docs/commands/bench.md); default: "
                    "share/reference/hemocell_bench.json")
       ->type_name("FILE");
+  command
+      ->add_option("--paper-cases", options->paper_cases,
+                   "Also time the paper's runs end to end, 1 and all threads, beside their "
+                   "settings before the speed work where a setting restores them: \"all\" "
+                   "(capillary, mills, shear: about an hour on 2 cores) or names, comma-separated "
+                   "(capillary-fine: hours); needs --output")
+      ->type_name("NAMES");
   command->footer(
       "--threads N sets the 'all threads' column (default: every logical CPU); --output DIR also "
       "writes DIR/bench.json; --verbose adds the time of each phase of the coupled step.");

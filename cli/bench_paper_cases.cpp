@@ -1,0 +1,259 @@
+#include "bench_paper_cases.hpp"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fcntl.h>
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+
+#include "bench_table.hpp"
+#include "common/errors.hpp"
+#include "common/format.hpp"
+#include "common/interrupt.hpp"
+
+extern char** environ;
+
+namespace rbcsim::cli {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// The cases "all" runs; capillary-fine (the 2562-vertex cell on dx 0.25 um) takes hours on two
+// cores and runs only when named.
+const std::vector<std::string> kDefaultCases = {"capillary", "mills", "shear"};
+
+// The paper's pairing: the 2562-vertex cell on dx 0.5 um (Sec. 2.3), at §3.4's natural velocity.
+const std::vector<std::string> kValidationCapillary = {"capillary", "--set",
+                                                       "capillary.inlet_velocity_m_per_s=5e-4"};
+// Before the speed work the capillary ran at the velocity it was given.
+const std::vector<std::string> kUncompressed = {"--set", "capillary.time_scale_compression=false"};
+
+std::vector<std::string> joined(std::vector<std::string> first,
+                                const std::vector<std::string>& second) {
+  first.insert(first.end(), second.begin(), second.end());
+  return first;
+}
+
+std::string known_names(const std::vector<PaperCase>& cases) {
+  std::string names = "all";
+  for (const auto& paper_case : cases) names += ", " + paper_case.name;
+  return names;
+}
+
+struct ChildOutcome {
+  int exit_code = 0;  // 128 + the signal when a signal ended it
+  double wall_s = 0.0;
+};
+
+// Runs this binary with `arguments`, stdout and stderr into `log`; waits for it.
+ChildOutcome run_child(const std::vector<std::string>& arguments,
+                       const std::filesystem::path& log) {
+  const auto executable = std::filesystem::read_symlink("/proc/self/exe");
+  std::vector<std::string> words = {executable.string()};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (auto& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  const auto start = std::chrono::steady_clock::now();
+  pid_t child = 0;
+  const int spawned =
+      posix_spawn(&child, executable.c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) {
+    throw RuntimeFailure("bench: could not start " + executable.string() + ": " +
+                         std::strerror(spawned));
+  }
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0) {
+    if (errno != EINTR) throw RuntimeFailure("bench: waiting for a paper case failed");
+  }
+  ChildOutcome outcome;
+  outcome.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  outcome.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return outcome;
+}
+
+// One run of a case: the child's wall time, exit code, and result.json's status and headline.
+Json measure_run(const std::vector<std::string>& arguments, const std::filesystem::path& directory,
+                 bool progress) {
+  if (progress) std::cerr << "rbcsim bench: paper case: rbcsim";
+  if (progress) {
+    for (const auto& word : arguments) std::cerr << ' ' << word;
+    std::cerr << std::endl;
+  }
+  const auto log = directory.string() + ".log";
+  const auto outcome = run_child(arguments, log);
+  throw_if_interrupted();
+  if (outcome.exit_code == kExitInterrupted || outcome.exit_code == 128 + SIGINT ||
+      outcome.exit_code == 128 + SIGTERM) {
+    throw Interrupted("a paper case was interrupted (see " + log + ")");
+  }
+  Json run = {{"seconds", outcome.wall_s},
+              {"exit_code", outcome.exit_code},
+              {"directory", directory.string()},
+              {"status", nullptr},
+              {"headline", nullptr}};
+  std::ifstream result(directory / "result.json");
+  if (result) {
+    const auto parsed = Json::parse(result, nullptr, false);
+    if (!parsed.is_discarded()) {
+      run["status"] = parsed.value("status", Json(nullptr));
+      run["headline"] = parsed.value("headline", Json(nullptr));
+    }
+  }
+  return run;
+}
+
+std::string run_name(const std::string& name, int threads, bool before) {
+  return name + "-" + std::to_string(threads) + "t" + (before ? "-before" : "");
+}
+
+std::string seconds_cell(const Json& run) {
+  if (run.is_null()) return "-";
+  const std::string seconds = fixed(run["seconds"].get<double>(), 1);
+  return run["exit_code"] == 0 ? seconds : seconds + " (exit " + run["exit_code"].dump() + ")";
+}
+
+}  // namespace
+
+std::vector<PaperCase> paper_cases(const config::Config& discocyte) {
+  // 642-vertex cells have edges twice the 2562-vertex cell's; k_link and k_area go as k / L0 (the
+  // hexagonal patch test), so twice them keeps Table 2's moduli (docs/physics.md).
+  const std::vector<std::string> table2_at_642 = {
+      "--set",
+      "mesh.subdivisions=3",
+      "--set",
+      "membrane.k_link_kBT=" + format_number(2.0 * discocyte.number("membrane.k_link_kBT")),
+      "--set",
+      "membrane.k_area_kBT=" + format_number(2.0 * discocyte.number("membrane.k_area_kBT"))};
+  return {
+      {"capillary", "validation capillary, discocyte, 2562 vertices on dx 0.5 um, 5e-4 m/s",
+       "transit", joined(kValidationCapillary, {"--set", "lattice.spacing_um=0.5"}), kUncompressed},
+      {"capillary-fine", "the same on dx 0.25 um (edges about one spacing; hours, only when named)",
+       "transit", joined(kValidationCapillary, {"--set", "lattice.spacing_um=0.25"}),
+       kUncompressed},
+      {"mills",
+       "fluid-coupled Mills curve (13 forces), discocyte, 642 vertices on dx 0.75 um",
+       "curve",
+       {"stretch", "--mode", "fluid", "--set", "mesh.subdivisions=3", "--set",
+        "lattice.spacing_um=0.75"},
+       {}},
+      {"shear",
+       "1000 1/s to steady state, discocyte, 642 vertices (Table 2's moduli) on dx 0.5 um",
+       "rate",
+       joined({"shear", "--rates", "1000", "--set", "lattice.spacing_um=0.5"}, table2_at_642),
+       {}},
+  };
+}
+
+std::vector<std::string> parse_paper_case_names(std::string_view text) {
+  const auto cases = paper_cases(config::resolve_config({.morphology = "discocyte"}));
+  std::vector<std::string> names;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const auto end = std::min(text.find(',', start), text.size());
+    const std::string name(text.substr(start, end - start));
+    if (name == "all") {
+      names.insert(names.end(), kDefaultCases.begin(), kDefaultCases.end());
+    } else if (std::none_of(cases.begin(), cases.end(),
+                            [&](const PaperCase& c) { return c.name == name; })) {
+      throw InputError("--paper-cases",
+                       "\"" + name + "\" is not a case (" + known_names(cases) + ")");
+    } else {
+      names.push_back(name);
+    }
+    start = end + 1;
+  }
+  return names;
+}
+
+Json run_paper_cases(const config::Config& discocyte, const PaperCaseRequest& request) {
+  std::filesystem::create_directories(request.directory);
+  const auto cases = paper_cases(discocyte);
+  Json entries = Json::array();
+  for (const auto& name : request.names) {
+    const auto& paper_case = *std::find_if(cases.begin(), cases.end(),
+                                           [&](const PaperCase& c) { return c.name == name; });
+    Json runs = Json::array();
+    for (const int threads : request.thread_counts) {
+      const auto settings = [&](bool before) {
+        auto arguments = paper_case.arguments;
+        if (before) arguments = joined(arguments, paper_case.before_arguments);
+        arguments = joined(arguments, request.forwarded_arguments);
+        const auto directory = request.directory / run_name(name, threads, before);
+        return std::make_pair(joined(arguments, {"--threads", std::to_string(threads), "--output",
+                                                 directory.string()}),
+                              directory);
+      };
+      const auto [now_arguments, now_directory] = settings(false);
+      Json run = {{"threads", threads},
+                  {"now", measure_run(now_arguments, now_directory, request.progress)},
+                  {"before", nullptr},
+                  {"speedup", nullptr}};
+      if (!paper_case.before_arguments.empty()) {
+        const auto [before_arguments, before_directory] = settings(true);
+        run["before"] = measure_run(before_arguments, before_directory, request.progress);
+        run["speedup"] =
+            run["before"]["seconds"].get<double>() / run["now"]["seconds"].get<double>();
+      }
+      runs.push_back(run);
+    }
+    std::string before_settings;
+    for (const auto& word : paper_case.before_arguments) {
+      if (word != "--set") before_settings += (before_settings.empty() ? "" : " ") + word;
+    }
+    entries.push_back({{"name", paper_case.name},
+                       {"description", paper_case.description},
+                       {"seconds_per", paper_case.figure},
+                       {"arguments", paper_case.arguments},
+                       {"before_settings", before_settings},
+                       {"added_arguments", request.forwarded_arguments},
+                       {"runs", runs}});
+  }
+  return entries;
+}
+
+void print_paper_cases(const Json& entries) {
+  std::printf("\npaper cases: wall seconds of the command as a user runs it\n");
+  for (const auto& entry : entries) {
+    const auto& runs = entry["runs"];
+    std::vector<std::string> threads;
+    for (const auto& run : runs)
+      threads.push_back(std::to_string(run["threads"].get<int>()) + " thread(s)");
+    print_row(
+        entry["name"].get<std::string>() + ": s per " + entry["seconds_per"].get<std::string>(), {},
+        "");
+    std::printf("  %s\n", entry["description"].get<std::string>().c_str());
+    print_row("", threads);
+    std::vector<std::string> now;
+    std::vector<std::string> before;
+    std::vector<std::string> speedup;
+    for (const auto& run : runs) {
+      now.push_back(seconds_cell(run["now"]));
+      before.push_back(seconds_cell(run["before"]));
+      speedup.push_back(run["speedup"].is_null() ? "-"
+                                                 : fixed(run["speedup"].get<double>(), 2) + "x");
+    }
+    print_row("  now (s)", now);
+    const auto& before_settings = entry["before_settings"].get<std::string>();
+    print_row("  before the speed work (s)", before,
+              before_settings.empty() ? "no setting restores it: the gain is in the code"
+                                      : "with " + before_settings);
+    if (!before_settings.empty()) print_row("  speed-up", speedup);
+  }
+}
+
+}  // namespace rbcsim::cli

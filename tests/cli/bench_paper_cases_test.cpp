@@ -1,0 +1,93 @@
+// `rbcsim bench --paper-cases`: the names it takes, what it refuses before measuring anything, and
+// (Validate: it measures for tens of seconds) that a tiny run of the paper's commands reports each
+// run's wall time, exit code and result, and the ratio to the run with the settings of before.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "bench_paper_cases.hpp"
+#include "common/errors.hpp"
+#include "support/run_rbcsim.hpp"
+#include "support/scratch_directory.hpp"
+
+namespace {
+
+using rbcsim::cli::parse_paper_case_names;
+using rbcsim::testing::run_rbcsim;
+
+TEST(BenchPaperCases, NamesInTheirOrderAllForTheThreeOfTheIssue) {
+  EXPECT_EQ(parse_paper_case_names("shear,capillary"),
+            (std::vector<std::string>{"shear", "capillary"}));
+  EXPECT_EQ(parse_paper_case_names("all"),
+            (std::vector<std::string>{"capillary", "mills", "shear"}));
+  EXPECT_THROW(parse_paper_case_names("capillary,"), rbcsim::InputError);
+  EXPECT_THROW(parse_paper_case_names("stretch"), rbcsim::InputError);
+}
+
+// Only the capillary has a setting that brings back how it ran before the speed work.
+TEST(BenchPaperCases, TheCapillaryRunsUncompressedForTheComparison) {
+  const auto cases =
+      rbcsim::cli::paper_cases(rbcsim::config::resolve_config({.morphology = "discocyte"}));
+  for (const auto& paper_case : cases) {
+    const bool capillary = paper_case.arguments.front() == "capillary";
+    EXPECT_EQ(paper_case.before_arguments.empty(), !capillary) << paper_case.name;
+    if (capillary) {
+      EXPECT_EQ(paper_case.before_arguments.back(), "capillary.time_scale_compression=false");
+    }
+  }
+}
+
+TEST(CliBench, PaperCasesRefusedBeforeMeasuring) {
+  const rbcsim::testing::ScratchDirectory scratch;
+  const auto unknown = run_rbcsim(
+      "bench --paper-cases shear,nonsense --output '" + (scratch.path() / "out").string() + "'",
+      scratch.path());
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_EQ(unknown.err,
+            "rbcsim: error: --paper-cases: \"nonsense\" is not a case (all, capillary, "
+            "capillary-fine, mills, shear)\n");
+  EXPECT_FALSE(std::filesystem::exists(scratch.path() / "out"));
+  const auto no_output = run_rbcsim("bench --paper-cases shear", scratch.path());
+  EXPECT_EQ(no_output.exit_code, 2);
+  EXPECT_EQ(no_output.err,
+            "rbcsim: error: --paper-cases: needs --output DIR (each case's run directory goes "
+            "there)\n");
+}
+
+TEST(ValidateBenchCommand, PaperCasesTimeTheCommandsBesideTheirSettingsOfBefore) {
+  const rbcsim::testing::ScratchDirectory scratch;
+  // The capillary shrunk to seconds by the bench's own --set, which each case receives last.
+  const auto result = run_rbcsim(
+      "bench --json --threads 1 --large-lattice 16 16 16 --cells 1 --paper-cases capillary "
+      "--set mesh.subdivisions=1 --set lattice.spacing_um=1 --output '" +
+          scratch.path().string() + "'",
+      scratch.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto report = nlohmann::json::parse(result.out);
+  ASSERT_EQ(report["paper_cases"].size(), 1u);
+  const auto& entry = report["paper_cases"][0];
+  EXPECT_EQ(entry["name"], "capillary");
+  EXPECT_EQ(entry["before_settings"], "capillary.time_scale_compression=false");
+  ASSERT_EQ(entry["runs"].size(), 1u);
+  const auto& run = entry["runs"][0];
+  EXPECT_EQ(run["threads"], 1);
+  for (const char* which : {"now", "before"}) {
+    const auto& measured = run[which];
+    EXPECT_EQ(measured["exit_code"], 0) << which;
+    EXPECT_EQ(measured["status"], "ok") << which;
+    EXPECT_GT(measured["seconds"].get<double>(), 0.0) << which;
+    EXPECT_TRUE(std::filesystem::exists(
+        std::filesystem::path(measured["directory"].get<std::string>()) / "result.json"));
+  }
+  // The same cell through the same tube, compressed in time or not: both pass it.
+  EXPECT_GT(run["now"]["headline"]["transit_time_s"].get<double>(), 0.0);
+  EXPECT_GT(run["before"]["headline"]["transit_time_s"].get<double>(), 0.0);
+  EXPECT_DOUBLE_EQ(run["speedup"].get<double>(),
+                   run["before"]["seconds"].get<double>() / run["now"]["seconds"].get<double>());
+}
+
+}  // namespace
