@@ -201,15 +201,24 @@ template <class Body>
 void CoupledSimulation::for_each_cell(const Body& body) {
   const auto count = static_cast<std::ptrdiff_t>(cells_.size());
   std::vector<std::exception_ptr> failures(cells_.size());
-  // One cell: its kernels use the threads. Several: one region over the cells, whose kernels
-  // then run on one thread each (their results do not depend on the thread count).
-#pragma omp parallel for schedule(dynamic, 1) if (count > 1)
-  for (std::ptrdiff_t k = 0; k < count; ++k) {
+  const auto run_cell = [&body, &failures](std::ptrdiff_t k) {
     try {
       body(static_cast<std::size_t>(k));
     } catch (...) {
       failures[static_cast<std::size_t>(k)] = std::current_exception();
     }
+  };
+  // Several cells: one region over the cells, whose kernels then run on one thread each (their
+  // results do not depend on the thread count). One cell: no region here, so that its kernels'
+  // own regions are top-level ones. Inside even an inactive region (`if (false)`) they would be
+  // nested, and GNU OpenMP serves nested teams from a second pool of threads whose workers spin
+  // beside the first pool's: three threads on two cores, and a two-thread capillary step 5x
+  // slower than a one-thread one (docs/performance.md).
+  if (count == 1) {
+    run_cell(0);
+  } else {
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::ptrdiff_t k = 0; k < count; ++k) run_cell(k);
   }
   for (std::size_t k = 0; k < failures.size(); ++k) {
     if (!failures[k]) continue;
