@@ -76,9 +76,19 @@ ChildOutcome run_child(const std::vector<std::string>& arguments,
     throw RuntimeFailure("bench: could not start " + executable.string() + ": " +
                          std::strerror(spawned));
   }
+  // Polled, so that an interrupt of the bench alone (kill -INT, not the terminal's Ctrl-C, which
+  // reaches both) is passed on and the case writes its results so far.
   int status = 0;
-  while (waitpid(child, &status, 0) < 0) {
-    if (errno != EINTR) throw RuntimeFailure("bench: waiting for a paper case failed");
+  bool passed_on = false;
+  while (true) {
+    const pid_t ended = waitpid(child, &status, WNOHANG);
+    if (ended == child) break;
+    if (ended < 0 && errno != EINTR) throw RuntimeFailure("bench: waiting for a paper case failed");
+    if (interrupt_requested() && !passed_on) {
+      kill(child, SIGINT);
+      passed_on = true;
+    }
+    usleep(100000);
   }
   ChildOutcome outcome;
   outcome.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -112,6 +122,8 @@ Json measure_run(const std::vector<std::string>& arguments, const std::filesyste
     if (!parsed.is_discarded()) {
       run["status"] = parsed.value("status", Json(nullptr));
       run["headline"] = parsed.value("headline", Json(nullptr));
+      // Where the coupled steps' time went, from commands that record it (capillary).
+      run["phase_ms_per_step"] = parsed.value("phase_ms_per_step", Json(nullptr));
     }
   }
   return run;

@@ -108,16 +108,9 @@ Json fluid_entry(const std::array<int, 3>& extent, const lattice::FluidThroughpu
 }
 
 Json phases_json(const coupling::StepPhaseTimes& phases) {
-  const double ms_per_step = 1e3 / static_cast<double>(phases.steps);
-  return {{"membrane", phases.membrane_s * ms_per_step},
-          {"contact", phases.contact_s * ms_per_step},
-          {"spread", phases.spread_s * ms_per_step},
-          {"cytoplasm_indicator", phases.indicator_s * ms_per_step},
-          {"fluid", phases.fluid_s * ms_per_step},
-          {"membrane_friction", phases.friction_s * ms_per_step},
-          {"interpolate_advance", phases.advance_s * ms_per_step},
-          {"checks", phases.checks_s * ms_per_step},
-          {"observers", phases.observers_s * ms_per_step}};
+  Json json = Json::object();
+  for (const auto& [phase, ms] : coupling::ms_per_step_by_phase(phases)) json[phase] = ms;
+  return json;
 }
 
 Json coupled_entry(const coupling::CoupledStepTiming& timing, int threads,

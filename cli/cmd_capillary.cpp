@@ -15,6 +15,7 @@
 
 #include "capillary_suspension.hpp"
 #include "cases/capillary_output.hpp"
+#include "cases/json_values.hpp"
 #include "cases/release_orientations.hpp"
 #include "command_registry.hpp"
 #include "common/errors.hpp"
@@ -310,6 +311,7 @@ void run_capillary_command(const CapillaryOptions& options) {
       if (!run.ok()) result["failure"] = run.failure;
       result["headline"] = headline(run);
       result["capillary"] = sections.back();
+      result["phase_ms_per_step"] = cases::phase_ms_per_step_json(run.phase_times);
       directory.write_json((subdirectory / "result.json").string(), result);
     }
     if (!first) first = run;
@@ -333,6 +335,7 @@ void run_capillary_command(const CapillaryOptions& options) {
                      {"membrane", count == 1 ? "cell0.pvd" : "orientation_0/cell0.pvd"},
                      {"fluid", count == 1 ? "fluid.pvd" : "orientation_0/fluid.pvd"}};
   result["capillary"] = sections.front();
+  result["phase_ms_per_step"] = cases::phase_ms_per_step_json(run.phase_times);
   if (count > 1) {
     result["capillary_ensemble"] = ensemble_section(sections, orientations, seed);
     const auto& statistics = result["capillary_ensemble"]["statistics"];
@@ -399,9 +402,9 @@ void attach_capillary(CLI::App& application) {
                    with_default("Diameter of the tube", "suspension.tube_diameter_um"))
       ->type_name("D");
   command
-      ->add_option("--length-um", options->length_um,
-                   with_default("Length of the tube, periodic along its axis",
-                                "suspension.tube_length_um"))
+      ->add_option(
+          "--length-um", options->length_um,
+          with_default("Length of the tube, periodic along its axis", "suspension.tube_length_um"))
       ->type_name("L");
   add_common_options(command, options->common);
   add_checkpoint_options(command, options->checkpoint, options->common);

@@ -449,6 +449,7 @@ CapillaryRun run_capillary(const mesh::TriangleMesh& cell_mesh, const CapillaryP
     run.steps = simulation.time_step();
     run.time_s = simulation.time_s();
     run.force_capped_steps = simulation.capped_steps_per_cell().at(0);
+    run.phase_times = simulation.phase_times();
   };
   try {
     run.stop_reason = simulation.run().stop_reason;

@@ -117,6 +117,8 @@ struct CapillaryRun {
   double time_s = 0.0;
   std::string stop_reason;
   std::size_t force_capped_steps = 0;
+  // Where this process's coupled steps spent their time (after a resume: the resumed part).
+  coupling::StepPhaseTimes phase_times;
   std::string failure;       // empty when the cell passed; else why not
   bool interrupted = false;  // Ctrl-C: the record so far, a checkpoint written if wired
   bool ok() const { return failure.empty(); }

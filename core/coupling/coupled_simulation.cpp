@@ -46,6 +46,19 @@ double StepPhaseTimes::total_s() const {
          checks_s + observers_s;
 }
 
+std::vector<std::pair<std::string, double>> ms_per_step_by_phase(const StepPhaseTimes& times) {
+  const double ms_per_step = times.steps == 0 ? 0.0 : 1e3 / static_cast<double>(times.steps);
+  return {{"membrane", times.membrane_s * ms_per_step},
+          {"contact", times.contact_s * ms_per_step},
+          {"spread", times.spread_s * ms_per_step},
+          {"cytoplasm_indicator", times.indicator_s * ms_per_step},
+          {"fluid", times.fluid_s * ms_per_step},
+          {"membrane_friction", times.friction_s * ms_per_step},
+          {"interpolate_advance", times.advance_s * ms_per_step},
+          {"checks", times.checks_s * ms_per_step},
+          {"observers", times.observers_s * ms_per_step}};
+}
+
 CoupledSimulation::CoupledSimulation(std::unique_ptr<lattice::FluidSolver> fluid,
                                      const units::UnitConverter& units,
                                      CouplingParameters parameters, const Vec3& origin_um)

@@ -106,6 +106,11 @@ struct StepPhaseTimes {
   double total_s() const;
 };
 
+// Each phase's name ("membrane", "contact", "spread", "cytoplasm_indicator", "fluid",
+// "membrane_friction", "interpolate_advance", "checks", "observers") and its ms per step, in the
+// step's order: where a run's time goes (rbcsim bench, result.json). Zeros before any step.
+std::vector<std::pair<std::string, double>> ms_per_step_by_phase(const StepPhaseTimes& times);
+
 struct RunSummary {
   std::size_t steps = 0;  // taken by this run() call
   double time_s = 0.0;    // physical time of the simulation when it stopped

@@ -46,6 +46,11 @@ TEST(CliCapillary, WritesTheRunDirectoryAndPrintsItsResultAsJson) {
   EXPECT_EQ(capillary["passed"], true);
   EXPECT_GT(capillary["transit_time_s"].get<double>(), 0.0);
   EXPECT_EQ(printed["headline"]["reynolds_number"], capillary["reynolds_number"]);
+  // Where the steps' time went: every coupled step timed, the fluid and the membrane took some.
+  const auto& phases = printed["phase_ms_per_step"];
+  EXPECT_EQ(phases["timed_steps"], capillary["steps"]);
+  EXPECT_GT(phases["fluid"].get<double>(), 0.0);
+  EXPECT_GT(phases["membrane"].get<double>(), 0.0);
 
   const auto config = read_json(run_dir / "config.json");
   EXPECT_EQ(config["run"]["command"], "capillary");
