@@ -122,10 +122,11 @@ void to_physical_times(cases::ShearedSuspensionRun& run, double factor) {
   run.time_s *= factor;
 }
 
-nlohmann::ordered_json rate_json(const RatePoint& point) {
+nlohmann::ordered_json rate_json(const RatePoint& point, std::size_t index) {
   const auto& run = point.run;
   nlohmann::ordered_json json = {
       {"shear_rate_per_s", point.shear_rate_per_s},
+      {"directory", cases::shear_rate_directory(index)},
       {"simulated_shear_rate_per_s", point.shear_rate_per_s * point.compression.factor},
       {"time_scale",
        {{"compressed", point.compression.factor != 1.0},
@@ -315,7 +316,8 @@ void run_sheared_suspension_command(const config::ConfigRequest& request,
                                     {"morphologies", mix.names},
                                     {"reference_diameter_um", diameter_um},
                                     {"rates", nlohmann::ordered_json::array()}};
-  for (const auto& point : points) section["rates"].push_back(rate_json(point));
+  for (std::size_t i = 0; i < points.size(); ++i)
+    section["rates"].push_back(rate_json(points[i], i));
   result["sheared_suspension"] = section;
   nlohmann::ordered_json headline = nlohmann::ordered_json::object();
   headline["hematocrit"] = points.front().run.packed_hematocrit;

@@ -31,6 +31,14 @@ double pries1990_tube_to_discharge_hematocrit(double diameter_um, double dischar
 // exponent C = -0.8): the high-shear viscosity of bulk blood relative to plasma at hematocrit H,
 // the scale against which a sheared suspension's relative viscosity is set.
 double pries1992_large_tube_relative_viscosity(double hematocrit);
+// rbcsim's own goal for a suspension against these fits: within 15 % (the suspensions issue).
+inline constexpr double kPriesAgreement = 0.15;
+// The verdict on rbcsim / fit - 1 against that goal.
+inline const char* pries_verdict(double relative_difference) {
+  return relative_difference <= kPriesAgreement && relative_difference >= -kPriesAgreement
+             ? "within 15 %"
+             : "differs by more than 15 %";
+}
 
 // The rows of share/reference/pries_tube_flow.csv (computed there from the same fits), so the
 // formulas above can be checked against an implementation of their own.

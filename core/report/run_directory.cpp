@@ -88,6 +88,11 @@ RunDirectory read_run_directory(const std::filesystem::path& directory) {
   // A capillary suspension (result.json's "suspension" object) is an experiment of its own: the
   // capillary section reads one cell's transit. It is reported under "suspension".
   if (run.command == "capillary" && run.result.contains("suspension")) run.command = "suspension";
+  // Likewise a sheared suspension (`shear --hematocrit`): its relative viscosity per rate, not one
+  // cell's length.
+  if (run.command == "shear" && run.result.contains("sheared_suspension")) {
+    run.command = "sheared_suspension";
+  }
   run.morphology = result.at("morphology").string();
   run.status = result.at("status").string();
   if (run.status != "ok" && run.status != "failed" && run.status != "interrupted") {

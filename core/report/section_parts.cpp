@@ -12,6 +12,7 @@ std::span<const ExperimentSection> experiment_sections() {
       {"shear", build_shear_section},
       {"capillary", build_capillary_section},
       {"suspension", build_suspension_section},
+      {"sheared_suspension", build_sheared_suspension_section},
   };
   return kSections;
 }

@@ -21,7 +21,7 @@ struct ExperimentSection {
   Section (*build)(const RunList& runs);  // runs of this command, in report order
 };
 
-// calibrate, stretch, shear, capillary, suspension: the order of the report.
+// calibrate, stretch, shear, capillary, suspension, sheared_suspension: the order of the report.
 std::span<const ExperimentSection> experiment_sections();
 
 Section build_runs_section(const RunList& runs);
@@ -33,6 +33,7 @@ Section build_stretch_section(const RunList& runs);
 Section build_shear_section(const RunList& runs);
 Section build_capillary_section(const RunList& runs);
 Section build_suspension_section(const RunList& runs);
+Section build_sheared_suspension_section(const RunList& runs);
 // Runs of a command without a section of its own: their headline numbers.
 Section build_other_section(const std::string& command, std::size_t index, const RunList& runs);
 

@@ -21,8 +21,6 @@ namespace {
 
 constexpr std::string_view kTimeSeriesFile = "suspension_timeseries.csv";
 constexpr std::string_view kCellsFile = "cells_timeseries.csv";
-// The goal for rbcsim against the fits of Pries et al.: within 15 %.
-constexpr double kPriesAgreement = 0.15;
 // Two runs are "the same tube and hematocrit" for the mixture comparison within these.
 constexpr double kSameDiameter_um = 0.01;
 constexpr double kSameHematocrit = 0.02;
@@ -183,8 +181,7 @@ Comparison against_fit(const std::string& what, double ours, double fit,
                        const std::string& reference) {
   const double difference = ours / fit - 1.0;
   return {what, format_significant(ours), format_significant(fit) + " (" + reference + ")",
-          format_significant(100.0 * difference, 3) + " %",
-          std::abs(difference) <= kPriesAgreement ? "within 15 %" : "differs by more than 15 %"};
+          format_significant(100.0 * difference, 3) + " %", pries_verdict(difference)};
 }
 
 // Every run's averages against Pries et al. at its diameter and measured H_D, and its cell-free

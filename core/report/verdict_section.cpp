@@ -7,7 +7,9 @@
 //              II), and whether the DI returns to its inlet value after the throat (Fig. 13);
 //   suspension the apparent viscosity and the Fahraeus ratio against the in-vitro fits of Pries
 //              et al. (within 15 %), the cell-free layer against its references (the section's
-//              comparisons).
+//              comparisons);
+//   sheared_suspension  each finished rate's relative viscosity against the wide-tube high-shear
+//              limit of Pries et al. 1992 at its hematocrit (the section's comparisons).
 // Shear has no digitised reference here (the paper's Figs. 9-11 are only plotted).
 #include <cmath>
 
@@ -111,7 +113,7 @@ Section build_verdict_section(const RunList& runs, const std::vector<Section>& s
     if (run.command == "capillary") capillary_rows(run, labels[i], table);
   }
   for (const auto& other : sections) {
-    if (other.id == "suspension") {
+    if (other.id == "suspension" || other.id == "sheared_suspension") {
       for (const auto& comparison : other.summary.at("comparisons")) {
         std::vector<std::string> row;
         for (const char* column : {"comparison", "rbcsim", "reference", "difference", "verdict"}) {
