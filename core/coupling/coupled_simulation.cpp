@@ -224,9 +224,9 @@ void CoupledSimulation::for_each_cell(const Body& body) {
   // Several cells: one region over the cells, whose kernels then run on one thread each (their
   // results do not depend on the thread count). One cell: no region here, so that its kernels'
   // own regions are top-level ones. Inside even an inactive region (`if (false)`) they would be
-  // nested, and GNU OpenMP serves nested teams from a second pool of threads whose workers spin
-  // beside the first pool's: three threads on two cores, and a two-thread capillary step 5x
-  // slower than a one-thread one (docs/performance.md).
+  // nested, and GNU OpenMP starts threads for every nested team, which then compete for the
+  // cores with the top-level team's spinning workers: a two-thread capillary step 5x slower than
+  // a one-thread one (docs/performance.md).
   if (count == 1) {
     run_cell(0);
   } else {
