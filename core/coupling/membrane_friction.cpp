@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <string>
 
 #include "common/errors.hpp"
@@ -28,13 +29,32 @@ void ImplicitMembraneFriction::gather_nodes(const ibm::InterpolationStencil& ste
   std::sort(nodes_.begin(), nodes_.end());
   nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
   slot_node_.clear();
+  slot_weight_.clear();
   slot_offsets_.assign(1, 0);
   for (std::size_t v = 0; v < stencil.point_count(); ++v) {
     for (const auto node : stencil.nodes(v)) {
-      slot_node_.push_back(static_cast<std::size_t>(
+      slot_node_.push_back(static_cast<std::uint32_t>(
           std::lower_bound(nodes_.begin(), nodes_.end(), node) - nodes_.begin()));
     }
-    slot_offsets_.push_back(slot_node_.size());
+    const auto weights = stencil.weights(v);
+    slot_weight_.insert(slot_weight_.end(), weights.begin(), weights.end());
+    slot_offsets_.push_back(static_cast<std::uint32_t>(slot_node_.size()));
+  }
+  // The same slots by node (counting sort, vertices ascending within a node), so that spreading
+  // is a gather per node that sums in the order a scatter over the vertices would.
+  node_slot_offsets_.assign(nodes_.size() + 1, 0);
+  for (const auto k : slot_node_) ++node_slot_offsets_[k + 1];
+  for (std::size_t k = 0; k < nodes_.size(); ++k)
+    node_slot_offsets_[k + 1] += node_slot_offsets_[k];
+  node_slot_vertex_.resize(slot_node_.size());
+  node_slot_weight_.resize(slot_node_.size());
+  std::vector<std::uint32_t> fill(node_slot_offsets_.begin(), node_slot_offsets_.end() - 1);
+  for (std::size_t v = 0; v < stencil.point_count(); ++v) {
+    for (std::size_t s = slot_offsets_[v]; s < slot_offsets_[v + 1]; ++s) {
+      const std::uint32_t at = fill[slot_node_[s]]++;
+      node_slot_vertex_[at] = static_cast<std::uint32_t>(v);
+      node_slot_weight_[at] = slot_weight_[s];
+    }
   }
 }
 
@@ -102,25 +122,26 @@ std::size_t ImplicitMembraneFriction::solve(const ibm::InterpolationStencil& ste
   std::vector<Vec3> fluid_velocity(node_count);
   fluid.pre_collision_moments(nodes_, density, fluid_velocity);
   for (std::size_t k = 0; k < node_count; ++k) fluid_velocity[k] /= density[k];
-  // S x (nodes -> vertices), S^T y (vertices -> nodes), in slot order.
+  // S x (nodes -> vertices), in slot order.
   auto interpolate = [&](std::span<const Vec3> x, std::span<Vec3> out) {
     for (std::size_t v = 0; v < vertex_count; ++v) {
-      const auto weights = stencil.weights(v);
       Vec3 sum = Vec3::Zero();
-      for (std::size_t s = slot_offsets_[v]; s < slot_offsets_[v + 1]; ++s) {
-        sum += weights[s - slot_offsets_[v]] * x[slot_node_[s]];
+      for (std::uint32_t s = slot_offsets_[v]; s < slot_offsets_[v + 1]; ++s) {
+        sum += slot_weight_[s] * x[slot_node_[s]];
       }
       out[v] = sum;
     }
   };
-  auto spread = [&](std::span<const Vec3> y, std::span<Vec3> out) {
-    std::fill(out.begin(), out.end(), Vec3::Zero());
-    for (std::size_t v = 0; v < vertex_count; ++v) {
-      const auto weights = stencil.weights(v);
-      for (std::size_t s = slot_offsets_[v]; s < slot_offsets_[v + 1]; ++s) {
-        out[slot_node_[s]] += weights[s - slot_offsets_[v]] * y[v];
-      }
+  // (S^T y) at node k, summed over its slots in vertex order.
+  auto spread_at = [&](std::span<const Vec3> y, std::size_t k) {
+    Vec3 sum = Vec3::Zero();
+    for (std::uint32_t s = node_slot_offsets_[k]; s < node_slot_offsets_[k + 1]; ++s) {
+      sum += node_slot_weight_[s] * y[node_slot_vertex_[s]];
     }
+    return sum;
+  };
+  auto spread = [&](std::span<const Vec3> y, std::span<Vec3> out) {
+    for (std::size_t k = 0; k < node_count; ++k) out[k] = spread_at(y, k);
   };
   std::vector<Vec3> vertex_values(vertex_count), resistance(vertex_count);
   // A x = rho x + dt S^T Gamma S x.
@@ -128,8 +149,9 @@ std::size_t ImplicitMembraneFriction::solve(const ibm::InterpolationStencil& ste
     interpolate(x, vertex_values);
     std::fill(resistance.begin(), resistance.end(), Vec3::Zero());
     membrane::add_friction_resistance(axes, vertex_values, network, friction_lu, resistance);
-    spread(resistance, out);
-    for (std::size_t k = 0; k < node_count; ++k) out[k] = density[k] * x[k] + dt_steps * out[k];
+    for (std::size_t k = 0; k < node_count; ++k) {
+      out[k] = density[k] * x[k] + dt_steps * spread_at(resistance, k);
+    }
   };
   // Preconditioner: per node, rho I + dt sum over the vertices it serves of w^2 times the
   // vertex's diagonal block of Gamma.
@@ -140,9 +162,8 @@ std::size_t ImplicitMembraneFriction::solve(const ibm::InterpolationStencil& ste
     inverse_blocks[k] = density[k] * Eigen::Matrix3d::Identity();
   }
   for (std::size_t v = 0; v < vertex_count; ++v) {
-    const auto weights = stencil.weights(v);
-    for (std::size_t s = slot_offsets_[v]; s < slot_offsets_[v + 1]; ++s) {
-      const double w = weights[s - slot_offsets_[v]];
+    for (std::uint32_t s = slot_offsets_[v]; s < slot_offsets_[v + 1]; ++s) {
+      const double w = slot_weight_[s];
       inverse_blocks[slot_node_[s]] += dt_steps * w * w * vertex_blocks[v];
     }
   }
@@ -172,25 +193,31 @@ std::size_t ImplicitMembraneFriction::solve(const ibm::InterpolationStencil& ste
   for (std::size_t k = 0; k < node_count; ++k) preconditioned[k] = inverse_blocks[k] * residual[k];
   direction = preconditioned;
   double rho = dot(residual, preconditioned);
+  double residual_squared = dot(residual, residual);
   std::size_t iterations = 0;
   for (;; ++iterations) {
-    if (dot(residual, residual) <= tolerance_squared) break;
+    if (residual_squared <= tolerance_squared) break;
     if (iterations == settings.max_iterations) {
-      throw RuntimeFailure("membrane viscosity: the implicit friction step did not converge in " +
-                           std::to_string(settings.max_iterations) + " iterations (residual " +
-                           format_significant(std::sqrt(dot(residual, residual) /
-                                                        std::max(tolerance_squared, 1e-300)) *
-                                              settings.relative_tolerance) +
-                           " of the first)");
+      throw RuntimeFailure(
+          "membrane viscosity: the implicit friction step did not converge in " +
+          std::to_string(settings.max_iterations) + " iterations (residual " +
+          format_significant(std::sqrt(residual_squared / std::max(tolerance_squared, 1e-300)) *
+                             settings.relative_tolerance) +
+          " of the first)");
     }
     apply_operator(direction, product);
     const double step = rho / dot(direction, product);
+    // One pass: the update, the preconditioned residual and both of its sums (each in node
+    // order, as separate passes would add them).
+    double next_rho = 0.0;
+    residual_squared = 0.0;
     for (std::size_t k = 0; k < node_count; ++k) {
       velocity[k] += step * direction[k];
       residual[k] -= step * product[k];
       preconditioned[k] = inverse_blocks[k] * residual[k];
+      residual_squared += residual[k].dot(residual[k]);
+      next_rho += residual[k].dot(preconditioned[k]);
     }
-    const double next_rho = dot(residual, preconditioned);
     const double beta = next_rho / rho;
     rho = next_rho;
     for (std::size_t k = 0; k < node_count; ++k) {

@@ -18,6 +18,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -69,10 +70,17 @@ class ImplicitMembraneFriction {
   bool add_previous_correction(std::span<Vec3> velocity) const;
 
   // The stencil's nodes, sorted, and for every vertex slot the index of its node among them.
+  // 32-bit slot indices: one cell's slots are far fewer than 2^32, and they halve the index
+  // traffic of the solve's gathers.
   std::vector<std::size_t> nodes_;
-  std::vector<std::size_t> slot_node_;
-  std::vector<std::size_t> slot_offsets_;  // vertex v's slots: [v], [v + 1]
-  std::vector<Vec3> momentum_;             // per node of nodes_: the latest solve's exchange
+  std::vector<std::uint32_t> slot_node_;
+  std::vector<double> slot_weight_;
+  std::vector<std::uint32_t> slot_offsets_;  // vertex v's slots: [v], [v + 1]
+  // The same slots grouped by node: node k's are [k], [k + 1] of the offsets, vertices ascending.
+  std::vector<std::uint32_t> node_slot_offsets_;
+  std::vector<std::uint32_t> node_slot_vertex_;
+  std::vector<double> node_slot_weight_;
+  std::vector<Vec3> momentum_;  // per node of nodes_: the latest solve's exchange
   // The latest solve's nodes (sorted) and u' - u at each: the next solve's start.
   std::vector<std::size_t> previous_nodes_;
   std::vector<Vec3> previous_correction_;

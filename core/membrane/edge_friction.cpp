@@ -97,6 +97,17 @@ std::vector<Vec3> edge_axes(std::span<const Vec3> positions, const EdgeNetwork& 
 void add_friction_resistance(std::span<const Vec3> axes, std::span<const Vec3> velocities,
                              const EdgeNetwork& network, const EdgeFrictionParameters& friction,
                              std::span<Vec3> out) {
+  if (friction.tangential_pN_s_per_um == 0.0) {
+    // The central split (the default), without the tangential term's exact zero: the same sums.
+    for (std::size_t e = 0; e < axes.size(); ++e) {
+      const auto& edge = network.edges[e];
+      const Vec3 relative = velocities[edge.vertex0] - velocities[edge.vertex1];
+      const Vec3 resisted = (friction.central_pN_s_per_um * relative.dot(axes[e])) * axes[e];
+      out[edge.vertex0] += resisted;
+      out[edge.vertex1] -= resisted;
+    }
+    return;
+  }
   for (std::size_t e = 0; e < axes.size(); ++e) {
     const auto& edge = network.edges[e];
     const Vec3 relative = velocities[edge.vertex0] - velocities[edge.vertex1];
