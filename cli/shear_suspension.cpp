@@ -4,17 +4,22 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "cases/json_values.hpp"
 #include "cases/shear_case.hpp"
 #include "cases/shear_observables.hpp"
 #include "cases/sheared_suspension.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "config/config_sources.hpp"
 #include "coupling/snapshot.hpp"
+#include "io/atomic_file.hpp"
 #include "io/csv_table.hpp"
 #include "io/pvd_collection.hpp"
+#include "io/text_file.hpp"
 #include "mesh/geometry.hpp"
 #include "report/reference_data.hpp"
 #include "run_directory.hpp"
@@ -157,6 +162,49 @@ nlohmann::ordered_json rate_json(const RatePoint& point, std::size_t index) {
   return json;
 }
 
+constexpr const char* kFinishedRateFileName = "point.json";
+
+// A rate that ran to its end (or failed in its physics): kept in rate_<i>/point.json with the
+// config's fingerprint, so that --resume of a sweep does not run it again.
+void write_finished_rate(const std::filesystem::path& rate_path, const RatePoint& point,
+                         const std::string& fingerprint) {
+  const nlohmann::ordered_json record = {
+      {"config_sha256", fingerprint},
+      {"shear_rate_per_s", point.shear_rate_per_s},
+      {"time_scale",
+       {{"factor", point.compression.factor},
+        {"physical_reynolds_number", point.compression.physical_reynolds_number},
+        {"simulated_reynolds_number", point.compression.simulated_reynolds_number}}},
+      {"run", cases::sheared_suspension_record(point.run)}};
+  io::write_text_atomically(rate_path / kFinishedRateFileName, record.dump(1) + "\n");
+}
+
+// With --resume: rate `index` as it ended before, if it did (InputError if its record was
+// written under another config or cannot be read).
+std::optional<RatePoint> finished_rate(const CheckpointOptions& checkpoint, std::size_t index,
+                                       const std::string& fingerprint) {
+  if (checkpoint.resume_directory.empty()) return std::nullopt;
+  const auto file =
+      checkpoint.resume_directory / cases::shear_rate_directory(index) / kFinishedRateFileName;
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  const auto source = file.string();
+  const auto record = config::parse_json(io::read_text_file(file), source);
+  if (record.value("config_sha256", std::string()) != fingerprint) {
+    throw InputError(source, "written by a run with a different config");
+  }
+  if (!record.contains("time_scale") || !record.contains("run")) {
+    throw InputError(source, "no \"time_scale\" or \"run\"");
+  }
+  RatePoint point;
+  point.shear_rate_per_s = cases::record_number(record, "shear_rate_per_s", source);
+  const auto& scale = record.at("time_scale");
+  point.compression = {cases::record_number(scale, "factor", source),
+                       cases::record_number(scale, "physical_reynolds_number", source),
+                       cases::record_number(scale, "simulated_reynolds_number", source)};
+  point.run = cases::sheared_suspension_from_record(record.at("run"), source);
+  return point;
+}
+
 void print_summary(const std::vector<RatePoint>& points, const setup::SuspensionMix& mix,
                    const RunDirectory& directory) {
   std::string names;
@@ -204,10 +252,6 @@ bool wants_sheared_suspension(const config::Config& config) {
 void run_sheared_suspension_command(const config::ConfigRequest& request,
                                     const config::Config& config, const CommonOptions& common,
                                     const CheckpointOptions& checkpoint) {
-  if (!checkpoint.every.empty() || !checkpoint.resume_directory.empty()) {
-    throw InputError(checkpoint.every.empty() ? "--resume" : "--checkpoint-every",
-                     "a sheared suspension neither writes nor resumes checkpoints");
-  }
   const auto rates = setup::shear_settings_from(config).rates_per_s;
   for (const double rate : rates) {
     if (!(rate > 0.0)) {
@@ -254,7 +298,16 @@ void run_sheared_suspension_command(const config::ConfigRequest& request,
   bool started = false;
   const Progress progress(common);
   std::vector<RatePoint> points;
+  const auto fingerprint = config_fingerprint(config);
   for (std::size_t i = 0; i < rates.size(); ++i) {
+    const auto rate_path = directory.path() / cases::shear_rate_directory(i);
+    if (auto finished = finished_rate(checkpoint, i, fingerprint)) {
+      if (!started) directory.start(config, described);
+      started = true;
+      write_rate_tables(rate_path, *finished);
+      points.push_back(std::move(*finished));
+      continue;
+    }
     RatePoint point;
     point.shear_rate_per_s = rates[i];
     point.compression = setup::sheared_suspension_compression_from(config, rates[i], diameter_um);
@@ -263,20 +316,12 @@ void run_sheared_suspension_command(const config::ConfigRequest& request,
     const auto morphologies = setup::suspension_morphologies_from(request, mix, factor);
     const auto settings =
         setup::sheared_suspension_settings_from(simulated, diameter_um, rates[i] * factor);
-    const auto rate_path = directory.path() / cases::shear_rate_directory(i);
     const cases::SuspensionPhysics physics{setup::fluid_parameters_from(simulated),
                                            setup::coupling_parameters_from(simulated, rate_path),
                                            config::make_unit_converter(simulated)};
     const auto intervals = setup::snapshot_intervals_from(simulated, physics.units);
     point.run = cases::run_sheared_suspension(
         morphologies, cells, physics, settings, [&](coupling::CoupledSimulation& simulation) {
-          // Once the first rate's cells are packed (the same packing for every rate): bad input
-          // is one line and no directory.
-          if (!started) {
-            if (contact_notice) print_notices(std::span(&*contact_notice, 1));
-            directory.start(config, described);
-            started = true;
-          }
           std::filesystem::create_directories(rate_path);
           coupling::add_vtk_output(simulation, rate_path, intervals, kinds);
           simulation.add_observer(
@@ -287,12 +332,24 @@ void run_sheared_suspension_command(const config::ConfigRequest& request,
                                  format_number(s.time_s() * settings.shear_rate_per_s) + ", " +
                                  format_number(std::round(directory.elapsed_s())) + " s");
                }});
+          // After the output observers (a resume restores their state); with --resume, a rate
+          // without a checkpoint had not started and starts afresh.
+          wire_checkpoints_in(cases::shear_rate_directory(i), simulation, checkpoint, directory,
+                              config);
+          // Once the first rate's cells are packed (the same packing for every rate): bad input
+          // is one line and no directory.
+          if (!started) {
+            if (contact_notice) print_notices(std::span(&*contact_notice, 1));
+            directory.start(config, described);
+            started = true;
+          }
         });
     if (!started) directory.start(config, described);
     started = true;
     std::filesystem::create_directories(rate_path);
     to_physical_times(point.run, factor);
     write_rate_tables(rate_path, point);
+    if (!point.run.interrupted) write_finished_rate(rate_path, point, fingerprint);
     points.push_back(std::move(point));
     if (points.back().run.interrupted) break;
   }

@@ -1,8 +1,12 @@
 // Small conversions shared by the cases' result.json sections.
 #pragma once
 
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
+
+#include "common/errors.hpp"
 
 #include "coupling/coupled_simulation.hpp"
 
@@ -21,6 +25,17 @@ inline nlohmann::ordered_json phase_ms_per_step_json(const coupling::StepPhaseTi
   for (const auto& [phase, ms] : coupling::ms_per_step_by_phase(times)) phases[phase] = ms;
   phases["timed_steps"] = times.steps;
   return phases;
+}
+
+// A number of a record a run wrote (a finished rate's point.json, say); null (written for a
+// non-finite one) reads as NaN. InputError naming `source` if missing or not a number.
+inline double record_number(const nlohmann::json& record, const char* key,
+                            const std::string& source) {
+  if (!record.contains(key)) throw InputError(source, std::string("no \"") + key + "\"");
+  const auto& value = record.at(key);
+  if (value.is_null()) return std::numeric_limits<double>::quiet_NaN();
+  if (!value.is_number()) throw InputError(source, std::string("\"") + key + "\" is not a number");
+  return value.get<double>();
 }
 
 }  // namespace rbcsim::cases

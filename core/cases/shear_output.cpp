@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "cases/json_values.hpp"
 #include "common/errors.hpp"
 
 namespace rbcsim::cases {
@@ -41,15 +42,6 @@ nlohmann::ordered_json rate_entry(const ShearPoint& point) {
       {"wall_time_s", point.wall_time_s}};
   if (!point.failure.empty()) entry["failure"] = point.failure;
   return entry;
-}
-
-// A number of a record; null (written for a non-finite one) reads as NaN.
-double record_number(const nlohmann::json& record, const char* key, const std::string& source) {
-  if (!record.contains(key)) throw InputError(source, std::string("no \"") + key + "\"");
-  const auto& value = record.at(key);
-  if (value.is_null()) return std::numeric_limits<double>::quiet_NaN();
-  if (!value.is_number()) throw InputError(source, std::string("\"") + key + "\" is not a number");
-  return value.get<double>();
 }
 
 }  // namespace

@@ -2,15 +2,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "cases/capillary_observables.hpp"
+#include "cases/json_values.hpp"
 #include "cases/release_orientations.hpp"
 #include "cases/shear_case.hpp"
 #include "cases/wall_repulsion.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/state_archive.hpp"
 #include "lattice/d3q19.hpp"
 #include "membrane/membrane_model.hpp"
 #include "mesh/geometry.hpp"
@@ -64,9 +68,15 @@ double near_wall_rate_lu(const lattice::FluidSolver& fluid) {
 
 class ShearedSuspensionRecorder {
  public:
-  ShearedSuspensionRecorder(ShearedSuspensionRun& run, const ShearedSuspensionSettings& settings,
-                            int gap_nodes, double rate_lu)
-      : run_(run), settings_(settings), gap_nodes_(gap_nodes), rate_lu_(rate_lu) {}
+  // `sample_steps` receives the step of each sample, for the checkpoint (ShearedSuspensionRecord).
+  ShearedSuspensionRecorder(ShearedSuspensionRun& run, std::vector<std::size_t>& sample_steps,
+                            const ShearedSuspensionSettings& settings, int gap_nodes,
+                            double rate_lu)
+      : run_(run),
+        sample_steps_(sample_steps),
+        settings_(settings),
+        gap_nodes_(gap_nodes),
+        rate_lu_(rate_lu) {}
 
   void operator()(const coupling::CoupledSimulation& simulation) {
     ShearedSuspensionSample sample;
@@ -94,13 +104,90 @@ class ShearedSuspensionRecorder {
         std::ranges::count_if(pierced, [](const auto& other) { return other.has_value(); }));
     if (sample.pierced_cells > 0) ++run_.samples_with_pierced_cells;
     run_.samples.push_back(sample);
+    sample_steps_.push_back(simulation.time_step());
   }
 
  private:
   ShearedSuspensionRun& run_;
+  std::vector<std::size_t>& sample_steps_;
   const ShearedSuspensionSettings& settings_;
   int gap_nodes_;
   double rate_lu_;
+};
+
+// Values per sample and per cell sample in the checkpoint.
+constexpr std::size_t kShearedSampleValues = 9;
+constexpr std::size_t kShearedCellSampleValues = 6;
+
+// Never stops the run: it carries the samples recorded so far in the checkpoint, so that a resumed
+// run reports what a straight one would. As in the tube (suspension_case.cpp, SuspensionRecord),
+// the sample of the state an interrupted run reached between two intervals is reported by that
+// run but left out of its checkpoint.
+class ShearedSuspensionRecord final : public coupling::StopCriterion {
+ public:
+  ShearedSuspensionRecord(ShearedSuspensionRun& run, std::vector<std::size_t>& sample_steps,
+                          std::size_t interval_steps, std::size_t cell_count)
+      : run_(run),
+        sample_steps_(sample_steps),
+        interval_steps_(interval_steps),
+        cell_count_(cell_count) {}
+
+  std::optional<std::string> check(const coupling::CoupledSimulation& /*simulation*/) override {
+    return std::nullopt;
+  }
+
+  void save_state(StateArchive& archive, const std::string& prefix) const override {
+    std::vector<double> samples, cells;
+    for (std::size_t i = 0; i < run_.samples.size(); ++i) {
+      if (sample_steps_[i] % interval_steps_ != 0) continue;
+      const auto& s = run_.samples[i];
+      samples.insert(
+          samples.end(),
+          {static_cast<double>(sample_steps_[i]), s.time_s, s.strain, s.relative_viscosity,
+           s.particle_stress_Pa, s.cytoplasm_stress_Pa, s.near_wall_relative_viscosity,
+           static_cast<double>(s.contact_pairs), static_cast<double>(s.pierced_cells)});
+      for (std::size_t c = 0; c < cell_count_; ++c) {
+        const auto& cell = run_.cell_samples[i * cell_count_ + c];
+        cells.insert(cells.end(),
+                     {cell.time_s, static_cast<double>(cell.cell), cell.centroid_um.x(),
+                      cell.centroid_um.y(), cell.centroid_um.z(), cell.deformation_index});
+      }
+    }
+    archive.put(prefix + "samples", std::move(samples));
+    archive.put(prefix + "cell_samples", std::move(cells));
+  }
+
+  void restore_state(StateArchive& archive, const std::string& prefix) override {
+    const auto samples = archive.take(prefix + "samples", std::nullopt);
+    if (samples.size() % kShearedSampleValues != 0) {
+      throw InputError(archive.source(), prefix + "samples: not whole samples");
+    }
+    const std::size_t count = samples.size() / kShearedSampleValues;
+    const auto cells =
+        archive.take(prefix + "cell_samples", count * cell_count_ * kShearedCellSampleValues);
+    run_.samples.clear();
+    run_.cell_samples.clear();
+    sample_steps_.clear();
+    run_.samples_with_pierced_cells = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto* v = samples.data() + i * kShearedSampleValues;
+      sample_steps_.push_back(static_cast<std::size_t>(v[0]));
+      run_.samples.push_back({v[1], v[2], v[3], v[4], v[5], v[6], static_cast<std::size_t>(v[7]),
+                              static_cast<std::size_t>(v[8])});
+      if (run_.samples.back().pierced_cells > 0) ++run_.samples_with_pierced_cells;
+    }
+    for (std::size_t k = 0; k < count * cell_count_; ++k) {
+      const auto* v = cells.data() + k * kShearedCellSampleValues;
+      run_.cell_samples.push_back(
+          {v[0], static_cast<std::size_t>(v[1]), Vec3(v[2], v[3], v[4]), v[5]});
+    }
+  }
+
+ private:
+  ShearedSuspensionRun& run_;
+  std::vector<std::size_t>& sample_steps_;
+  std::size_t interval_steps_;
+  std::size_t cell_count_;
 };
 
 void average_samples(ShearedSuspensionRun& run, double fraction) {
@@ -122,6 +209,138 @@ void average_samples(ShearedSuspensionRun& run, double fraction) {
 }
 
 }  // namespace
+
+namespace {
+
+nlohmann::ordered_json finite_or_null(double value) {
+  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
+}
+
+nlohmann::ordered_json rows_json(const std::vector<std::vector<double>>& rows) {
+  auto json = nlohmann::ordered_json::array();
+  for (const auto& row : rows) {
+    auto values = nlohmann::ordered_json::array();
+    for (const double value : row) values.push_back(finite_or_null(value));
+    json.push_back(std::move(values));
+  }
+  return json;
+}
+
+// The rows of `key`, each of `width` numbers (null: NaN).
+std::vector<std::vector<double>> rows_from(const nlohmann::json& record, const char* key,
+                                           std::size_t width, const std::string& source) {
+  if (!record.contains(key) || !record.at(key).is_array()) {
+    throw InputError(source, std::string("no array \"") + key + "\"");
+  }
+  std::vector<std::vector<double>> rows;
+  for (const auto& row : record.at(key)) {
+    if (!row.is_array() || row.size() != width) {
+      throw InputError(source, std::string("\"") + key + "\": a row of other than " +
+                                   std::to_string(width) + " numbers");
+    }
+    std::vector<double> values;
+    for (const auto& value : row) {
+      if (!value.is_null() && !value.is_number()) {
+        throw InputError(source, std::string("\"") + key + "\": a value that is not a number");
+      }
+      values.push_back(value.is_null() ? std::numeric_limits<double>::quiet_NaN()
+                                       : value.get<double>());
+    }
+    rows.push_back(std::move(values));
+  }
+  return rows;
+}
+
+}  // namespace
+
+nlohmann::ordered_json sheared_suspension_record(const ShearedSuspensionRun& run) {
+  std::vector<std::vector<double>> samples, cells;
+  for (const auto& s : run.samples) {
+    samples.push_back({s.time_s, s.strain, s.relative_viscosity, s.particle_stress_Pa,
+                       s.cytoplasm_stress_Pa, s.near_wall_relative_viscosity,
+                       static_cast<double>(s.contact_pairs), static_cast<double>(s.pierced_cells)});
+  }
+  for (const auto& c : run.cell_samples) {
+    cells.push_back({c.time_s, static_cast<double>(c.cell), c.centroid_um.x(), c.centroid_um.y(),
+                     c.centroid_um.z(), c.deformation_index});
+  }
+  return {{"cell_morphologies", run.cell_morphologies},
+          {"gap_um", run.gap_um},
+          {"length_um", run.length_um},
+          {"width_um", run.width_um},
+          {"packed_hematocrit", run.packed_hematocrit},
+          {"packing_iterations", run.packing_iterations},
+          {"plasma_stress_Pa", run.plasma_stress_Pa},
+          {"averaged_samples", run.averaged_samples},
+          {"relative_viscosity", finite_or_null(run.relative_viscosity)},
+          {"relative_viscosity_sd", finite_or_null(run.relative_viscosity_sd)},
+          {"near_wall_relative_viscosity", finite_or_null(run.near_wall_relative_viscosity)},
+          {"steps", run.steps},
+          {"time_s", run.time_s},
+          {"close_contact_steps", run.close_contact_steps},
+          {"capped_contact_steps", run.capped_contact_steps},
+          {"samples_with_pierced_cells", run.samples_with_pierced_cells},
+          {"stop_reason", run.stop_reason},
+          {"failure", run.failure},
+          {"interrupted", run.interrupted},
+          {"samples", rows_json(samples)},
+          {"cell_samples", rows_json(cells)}};
+}
+
+ShearedSuspensionRun sheared_suspension_from_record(const nlohmann::json& record,
+                                                    const std::string& source) {
+  const auto number = [&](const char* key) { return record_number(record, key, source); };
+  // A count, refused unless a whole number >= 0 (a cast of anything else is undefined).
+  const auto whole = [&](double value, const char* key) {
+    if (!(value >= 0.0 && value == std::floor(value) && value < 1e18)) {
+      throw InputError(source, std::string("\"") + key + "\": not a count");
+    }
+    return static_cast<std::size_t>(value);
+  };
+  const auto count = [&](const char* key) { return whole(number(key), key); };
+  const auto text = [&](const char* key) {
+    if (!record.contains(key) || !record.at(key).is_string()) {
+      throw InputError(source, std::string("no string \"") + key + "\"");
+    }
+    return record.at(key).get<std::string>();
+  };
+  ShearedSuspensionRun run;
+  if (!record.contains("cell_morphologies") || !record.at("cell_morphologies").is_array()) {
+    throw InputError(source, "no array \"cell_morphologies\"");
+  }
+  for (const auto& kind : record.at("cell_morphologies")) {
+    if (!kind.is_number_unsigned()) {
+      throw InputError(source, "\"cell_morphologies\": not a morphology index");
+    }
+    run.cell_morphologies.push_back(kind.get<std::size_t>());
+  }
+  run.gap_um = number("gap_um");
+  run.length_um = number("length_um");
+  run.width_um = number("width_um");
+  run.packed_hematocrit = number("packed_hematocrit");
+  run.packing_iterations = count("packing_iterations");
+  run.plasma_stress_Pa = number("plasma_stress_Pa");
+  run.averaged_samples = count("averaged_samples");
+  run.relative_viscosity = number("relative_viscosity");
+  run.relative_viscosity_sd = number("relative_viscosity_sd");
+  run.near_wall_relative_viscosity = number("near_wall_relative_viscosity");
+  run.steps = count("steps");
+  run.time_s = number("time_s");
+  run.close_contact_steps = count("close_contact_steps");
+  run.capped_contact_steps = count("capped_contact_steps");
+  run.samples_with_pierced_cells = count("samples_with_pierced_cells");
+  run.stop_reason = text("stop_reason");
+  run.failure = text("failure");
+  run.interrupted = record.value("interrupted", false);
+  for (const auto& v : rows_from(record, "samples", 8, source)) {
+    run.samples.push_back(
+        {v[0], v[1], v[2], v[3], v[4], v[5], whole(v[6], "samples"), whole(v[7], "samples")});
+  }
+  for (const auto& v : rows_from(record, "cell_samples", 6, source)) {
+    run.cell_samples.push_back({v[0], whole(v[1], "cell_samples"), Vec3(v[2], v[3], v[4]), v[5]});
+  }
+  return run;
+}
 
 SuspensionShearStress suspension_shear_stress(const coupling::CoupledSimulation& simulation,
                                               int gap_nodes) {
@@ -233,12 +452,16 @@ ShearedSuspensionRun run_sheared_suspension(std::span<const SuspensionMorphology
   const auto interval_steps = std::max<std::size_t>(
       1, static_cast<std::size_t>(
              std::round(physics.units.to_lattice(PhysicalUnit::time_s, interval_s))));
-  coupling::Observer recorder{"sheared_suspension_samples", interval_steps,
-                              ShearedSuspensionRecorder(run, settings, box.gap_nodes(), rate_lu)};
+  std::vector<std::size_t> sampled_at_steps;
+  coupling::Observer recorder{
+      "sheared_suspension_samples", interval_steps,
+      ShearedSuspensionRecorder(run, sampled_at_steps, settings, box.gap_nodes(), rate_lu)};
   recorder.needs_term_forces = true;  // the membrane viscosity's friction, for sigma_p
   simulation.add_observer(std::move(recorder));
   simulation.add_stop_criterion(
       coupling::stop_at_time(settings.strain / settings.shear_rate_per_s));
+  simulation.add_stop_criterion(std::make_unique<ShearedSuspensionRecord>(
+      run, sampled_at_steps, interval_steps, cell_morphologies.size()));
   if (configure) configure(simulation);
   const auto end = run_to_end(simulation);
   run.stop_reason = end.stop_reason;

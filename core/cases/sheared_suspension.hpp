@@ -23,10 +23,15 @@
 // last `averaging_fraction` of the run. As a check where no cell reaches the walls, the same ratio
 // from the plane-averaged velocity gradient between the two fluid layers next to each wall
 // (exact there: no force acts between them and the wall).
+//
+// Checkpoints: the samples taken so far ride in the simulation's checkpoint (a stop criterion's
+// state), so a run resumed through `configure` (CoupledSimulation::resume_from) ends with the
+// straight run's samples bit for bit.
 #pragma once
 
 #include <cstddef>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <span>
 #include <string>
 #include <vector>
@@ -102,6 +107,13 @@ ShearedSuspensionRun run_sheared_suspension(std::span<const SuspensionMorphology
                                             const SuspensionPhysics& physics,
                                             const ShearedSuspensionSettings& settings,
                                             const SuspensionConfigure& configure = {});
+
+// The whole run as JSON and back, every number as run (doubles round-trip exactly): what `shear`
+// keeps of a finished rate so that --resume need not run it again. The reader throws InputError
+// naming `source` for a record it cannot read.
+nlohmann::ordered_json sheared_suspension_record(const ShearedSuspensionRun& run);
+ShearedSuspensionRun sheared_suspension_from_record(const nlohmann::json& record,
+                                                    const std::string& source);
 
 // The shear stress the cells add to the plasma's in the gap (the header's sigma_p and mu_delta),
 // Pa, from the simulation's latest step; `gap_nodes` fluid layers between the walls.

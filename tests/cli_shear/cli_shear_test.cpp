@@ -198,6 +198,50 @@ TEST(CliShear, ASuspensionBetweenWallsWritesItsViscosityPerRate) {
   EXPECT_TRUE(fs::exists(run_dir / "rate_000/cells.pvd"));
 }
 
+// --checkpoint-every leaves each rate's last checkpoint in rate_<i>/ and a finished rate's
+// point.json; --resume keeps a finished rate (its snapshots, removed here, are not written
+// again) and runs an unfinished one on from its checkpoint: the same results as the straight run.
+TEST(CliShear, ResumeOfASuspensionSweepKeepsFinishedRatesAndResumesTheRest) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const std::string settings = std::string(kCoarseSuspension) +
+                               "--hematocrit 0.1 --rates 200,400 --set suspension.strain=0.5 "
+                               "--threads 1 --quiet ";
+  const auto straight = run_rbcsim(
+      settings + "--checkpoint-every 20 --output '" + run_dir.string() + "'", scratch.path());
+  ASSERT_EQ(straight.exit_code, 0) << straight.err;
+  const auto straight_result = read_json(run_dir / "result.json");
+  ASSERT_GT(straight_result["sheared_suspension"]["rates"][1]["steps"].get<double>(), 20.0);
+  const auto second_samples = read_text(run_dir / "rate_001/suspension_timeseries.csv");
+  const auto second_cells = read_text(run_dir / "rate_001/cells_timeseries.csv");
+  ASSERT_TRUE(fs::exists(run_dir / "rate_000/point.json"));
+  ASSERT_TRUE(fs::exists(run_dir / "rate_001/checkpoint.bin"));
+  // The first rate finished; the second as if stopped after its last checkpoint.
+  fs::remove(run_dir / "rate_000/cells.pvd");
+  fs::remove(run_dir / "rate_001/point.json");
+  for (const char* name : {"result.json", "sheared_suspension.csv",
+                           "rate_001/suspension_timeseries.csv", "rate_001/cells_timeseries.csv"}) {
+    fs::remove(run_dir / name);
+  }
+
+  const auto resumed = run_rbcsim(settings + "--resume '" + run_dir.string() + "'", scratch.path());
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  const auto resumed_result = read_json(run_dir / "result.json");
+  EXPECT_EQ(resumed_result["sheared_suspension"], straight_result["sheared_suspension"]);
+  EXPECT_EQ(resumed_result["headline"], straight_result["headline"]);
+  EXPECT_EQ(read_text(run_dir / "rate_001/suspension_timeseries.csv"), second_samples);
+  EXPECT_EQ(read_text(run_dir / "rate_001/cells_timeseries.csv"), second_cells);
+  EXPECT_FALSE(fs::exists(run_dir / "rate_000/cells.pvd"));  // not run again
+  EXPECT_TRUE(fs::exists(run_dir / "rate_001/point.json"));
+
+  // A finished rate's record of another config is refused, naming it.
+  const auto other = run_rbcsim(
+      settings + "--set suspension.sample_interval_strain=0.25 --resume '" + run_dir.string() + "'",
+      scratch.path());
+  EXPECT_EQ(other.exit_code, 2);
+  EXPECT_NE(other.err.find("rate_000/point.json"), std::string::npos) << other.err;
+}
+
 TEST(CliShear, ABadSuspensionExitsTwoWithOneLineAndNoRunDirectory) {
   const ScratchDirectory scratch;
   const auto out = (scratch.path() / "run").string();
@@ -211,7 +255,6 @@ TEST(CliShear, ABadSuspensionExitsTwoWithOneLineAndNoRunDirectory) {
   };
   expect_refused("--hematocrit 0.1 --boundary lees-edwards", "shear.boundary");
   expect_refused("--hematocrit 0.1 --rates 0,200", "shear.rates_per_s");
-  expect_refused("--hematocrit 0.1 --checkpoint-every 100", "--checkpoint-every");
   expect_refused("--hematocrit 0.69 --rates 200 --set suspension.packing_max_iterations=200",
                  "suspension.hematocrit");  // cannot be packed
 }

@@ -5,7 +5,6 @@
 // file with capillary_resume_test.cpp.)
 #include <gtest/gtest.h>
 
-#include <csignal>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -22,8 +21,9 @@
 namespace rbcsim::cases {
 namespace suspension_resume {
 
-using rbcsim::testing::checkpoint_only_when_interrupted;
+using rbcsim::testing::interrupt_after_step;
 using rbcsim::testing::InterruptScope;
+using rbcsim::testing::resume_from_checkpoint;
 using rbcsim::testing::ScratchDirectory;
 
 constexpr std::size_t kTotalSteps = 30;
@@ -102,12 +102,8 @@ TEST(SuspensionResume, InterruptedThenResumedRunEndsAsAStraightRun) {
 
   const ScratchDirectory scratch;
   const auto file = scratch.path() / coupling::kCheckpointFileName;
-  const auto interrupted = suspension.run([&file](coupling::CoupledSimulation& simulation) {
-    checkpoint_only_when_interrupted(simulation, file, "suspension resume test");
-    simulation.add_observer({"interrupt", 1, [](const coupling::CoupledSimulation& s) {
-                               if (s.time_step() == kInterruptStep) request_interrupt(SIGINT);
-                             }});
-  });
+  const auto interrupted =
+      suspension.run(interrupt_after_step(kInterruptStep, file, "suspension resume test"));
   ASSERT_TRUE(interrupted.interrupted) << interrupted.failure;
   EXPECT_EQ(interrupted.steps, kInterruptStep);
   // The results so far include the state reached, between two sample intervals.
@@ -117,10 +113,7 @@ TEST(SuspensionResume, InterruptedThenResumedRunEndsAsAStraightRun) {
   ASSERT_TRUE(std::filesystem::exists(file));
   clear_interrupt();
 
-  const auto resumed = suspension.run([&file](coupling::CoupledSimulation& simulation) {
-    checkpoint_only_when_interrupted(simulation, file, "suspension resume test");
-    simulation.resume_from(file);
-  });
+  const auto resumed = suspension.run(resume_from_checkpoint(file, "suspension resume test"));
   ASSERT_TRUE(resumed.ok()) << resumed.failure;
   EXPECT_EQ(resumed.steps, straight.steps);
   EXPECT_EQ(resumed.time_s, straight.time_s);

@@ -1,7 +1,10 @@
 // For tests that raise the interrupt flag (Ctrl-C) in-process.
 #pragma once
 
+#include <csignal>
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
 
@@ -22,6 +25,26 @@ inline void checkpoint_only_when_interrupted(coupling::CoupledSimulation& simula
                                              const std::filesystem::path& file,
                                              std::string config_fingerprint) {
   simulation.set_checkpoint_policy({file, std::move(config_fingerprint), 0, 0.0});
+}
+
+// A run's configure hook that checkpoints to `file` only when interrupted and raises the interrupt
+// after step `step`; and the hook that resumes the same run from that checkpoint.
+inline std::function<void(coupling::CoupledSimulation&)> interrupt_after_step(
+    std::size_t step, const std::filesystem::path& file, const std::string& config_fingerprint) {
+  return [step, file, config_fingerprint](coupling::CoupledSimulation& simulation) {
+    checkpoint_only_when_interrupted(simulation, file, config_fingerprint);
+    simulation.add_observer({"interrupt", 1, [step](const coupling::CoupledSimulation& s) {
+                               if (s.time_step() == step) rbcsim::request_interrupt(SIGINT);
+                             }});
+  };
+}
+
+inline std::function<void(coupling::CoupledSimulation&)> resume_from_checkpoint(
+    const std::filesystem::path& file, const std::string& config_fingerprint) {
+  return [file, config_fingerprint](coupling::CoupledSimulation& simulation) {
+    checkpoint_only_when_interrupted(simulation, file, config_fingerprint);
+    simulation.resume_from(file);
+  };
 }
 
 }  // namespace rbcsim::testing
