@@ -7,7 +7,7 @@
 #   2. calibrate: the patch tests' moduli beside the paper's (Table 2 parameters);
 #   3. stretch: the quasi-static optical-tweezers curve of the discocyte against Mills et al. (2004),
 #      with all six forces and without F_ad/F_tc (the paper's Fig. 8); then calibrate's stretch fit
-#      (k_link fitted to Mills' curve, the contact patches held rigid as by glued beads: ~4 min)
+#      (k_link fitted to Mills' curve, the contact patches held rigid as by glued beads: ~5 min)
 #      and the curve with the fitted parameters;
 #   4. shear: a short sweep (0, 1000, 2000 1/s) of each morphology with and without F_ad/F_tc, on
 #      the coarse setting of docs/validation.md (642 vertices, dx 0.75 um, 10 strains: not steady);

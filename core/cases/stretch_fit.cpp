@@ -15,6 +15,7 @@ namespace {
 StretchSettings quasi_static(const StretchFitSettings& settings) {
   auto stretch = settings.stretch;
   stretch.mode = "quasi-static";
+  stretch.relaxation_settings.max_iterations = settings.max_iterations_per_force;
   return stretch;
 }
 

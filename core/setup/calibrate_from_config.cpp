@@ -20,12 +20,14 @@ cases::CalibrationSettings calibration_settings_from(const config::Config& confi
   targets.poisson_ratio = config.number("calibrate.target.poisson_ratio");
   targets.bending_modulus_J = config.number("calibrate.target.bending_modulus_J");
   targets.overall_bending_modulus_J = config.number("calibrate.target.overall_bending_modulus_J");
-  // The stretch fit runs the stretch as configured (stretch.contact.*, stretch.quasi_static.*)
-  // against Mills et al. (2004).
+  // The stretch fit runs the stretch as configured (stretch.contact.*, stretch.quasi_static.*
+  // but its own iteration budget) against Mills et al. (2004).
   auto& stretch_fit = settings.stretch_fit;
   stretch_fit.stretch = stretch_settings_from(config);
   stretch_fit.reference = mills2004_stretch_reference();
   stretch_fit.relative_tolerance = config.number("calibrate.stretch_fit.relative_tolerance");
+  stretch_fit.max_iterations_per_force =
+      static_cast<std::size_t>(config.integer("calibrate.stretch_fit.max_iterations_per_force"));
   return settings;
 }
 

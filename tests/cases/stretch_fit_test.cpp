@@ -77,6 +77,27 @@ TEST(StretchFit, FailsWhenTheMisfitHasNoMinimum) {
       rbcsim::RuntimeFailure);
 }
 
+// The fit's curves relax with its own budget, not the stretch's: with too few iterations per
+// force every curve fails (each counted as failed, never as a shape), and the fit with them.
+TEST(StretchFit, CurvesRelaxWithinTheFitsOwnIterationBudget) {
+  auto settings = rigid_contact_settings();
+  settings.reference = curve_as_measured(4.2);
+  settings.max_evaluations = 4;
+  settings.max_iterations_per_force = 10;
+  ASSERT_GT(settings.stretch.relaxation_settings.max_iterations, 1000u);
+  std::vector<rbcsim::cases::StretchFitEvaluation> seen;
+  settings.on_evaluation = [&seen](const auto& evaluation) { seen.push_back(evaluation); };
+  EXPECT_THROW(
+      rbcsim::cases::fit_stretch_k_link(coarse_discocyte(), MembraneParameters{}, settings),
+      rbcsim::RuntimeFailure);
+  ASSERT_FALSE(seen.empty());
+  for (const auto& evaluation : seen) {
+    EXPECT_TRUE(std::isinf(evaluation.misfit));
+    EXPECT_NE(evaluation.failure.find("not converged after 10 iterations"), std::string::npos)
+        << evaluation.failure;
+  }
+}
+
 // Forces below the first loaded reference force compare nothing but the rest shape, which no
 // k_link changes: bad input, found before any curve is run.
 TEST(StretchFit, RefusesForcesThatSpanNoLoadedReferenceForce) {

@@ -79,6 +79,15 @@ void add_calibrate_options(OptionTable& table) {
                   "The stretch fit's k_link is known to within this fraction.")
       .above(0.0)
       .at_most(0.1);
+  table
+      .add_integer(
+          "calibrate.stretch_fit.max_iterations_per_force", "",
+          static_cast<int>(kCalibrateDefaults.stretch_fit.max_iterations_per_force),
+          "Relaxation iterations per force of the fit's curves (instead of "
+          "stretch.quasi_static.max_iterations); a curve needing more counts as failed, which "
+          "bounds the search. Near the softest k_link that carries Mills' forces the curves that "
+          "converge need up to ~5000, the ones past it never converge.")
+      .at_least(1);
   add_target_options(table);
 }
 
