@@ -1,6 +1,7 @@
 // Small conversions shared by the cases' result.json sections.
 #pragma once
 
+#include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -15,6 +16,11 @@ namespace rbcsim::cases {
 // The number, or JSON null when there is none (a quantity that was not measured).
 inline nlohmann::ordered_json optional_number(const std::optional<double>& value) {
   return value ? nlohmann::ordered_json(*value) : nlohmann::ordered_json(nullptr);
+}
+
+// The number, or JSON null when it is not finite (JSON has no NaN or infinity).
+inline nlohmann::ordered_json number_or_null(double value) {
+  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
 }
 
 // Where a run's coupled steps spent their wall time: each phase in ms per step

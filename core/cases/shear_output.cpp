@@ -9,10 +9,6 @@
 namespace rbcsim::cases {
 namespace {
 
-nlohmann::ordered_json number_or_null(double value) {
-  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
-}
-
 nlohmann::ordered_json rate_entry(const ShearPoint& point) {
   const auto& plan = point.plan;
   nlohmann::ordered_json entry = {

@@ -1,6 +1,7 @@
 #include "cases/sheared_suspension.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -115,9 +116,52 @@ class ShearedSuspensionRecorder {
   double rate_lu_;
 };
 
-// Values per sample and per cell sample in the checkpoint.
-constexpr std::size_t kShearedSampleValues = 9;
+// One sample's and one cell sample's numbers in a fixed order: the layout of the checkpoint and of
+// a finished rate's record (sheared_suspension_record).
+constexpr std::size_t kShearedSampleValues = 8;
 constexpr std::size_t kShearedCellSampleValues = 6;
+
+std::array<double, kShearedSampleValues> sample_values(const ShearedSuspensionSample& s) {
+  return {s.time_s,
+          s.strain,
+          s.relative_viscosity,
+          s.particle_stress_Pa,
+          s.cytoplasm_stress_Pa,
+          s.near_wall_relative_viscosity,
+          static_cast<double>(s.contact_pairs),
+          static_cast<double>(s.pierced_cells)};
+}
+
+std::array<double, kShearedCellSampleValues> cell_sample_values(
+    const ShearedSuspensionCellSample& c) {
+  return {c.time_s,          static_cast<double>(c.cell), c.centroid_um.x(),
+          c.centroid_um.y(), c.centroid_um.z(),           c.deformation_index};
+}
+
+// A count read back, refused unless a whole number >= 0 (a cast of anything else is undefined).
+std::size_t count_from(double value, const std::string& source, const std::string& what) {
+  if (!(value >= 0.0 && value == std::floor(value) && value < 1e18)) {
+    throw InputError(source, what + ": not a count");
+  }
+  return static_cast<std::size_t>(value);
+}
+
+ShearedSuspensionSample sample_from(const double* v, const std::string& source,
+                                    const std::string& what) {
+  return {v[0],
+          v[1],
+          v[2],
+          v[3],
+          v[4],
+          v[5],
+          count_from(v[6], source, what),
+          count_from(v[7], source, what)};
+}
+
+ShearedSuspensionCellSample cell_sample_from(const double* v, const std::string& source,
+                                             const std::string& what) {
+  return {v[0], count_from(v[1], source, what), Vec3(v[2], v[3], v[4]), v[5]};
+}
 
 // Never stops the run: it carries the samples recorded so far in the checkpoint, so that a resumed
 // run reports what a straight one would. As in the tube (suspension_case.cpp, SuspensionRecord),
@@ -140,29 +184,26 @@ class ShearedSuspensionRecord final : public coupling::StopCriterion {
     std::vector<double> samples, cells;
     for (std::size_t i = 0; i < run_.samples.size(); ++i) {
       if (sample_steps_[i] % interval_steps_ != 0) continue;
-      const auto& s = run_.samples[i];
-      samples.insert(
-          samples.end(),
-          {static_cast<double>(sample_steps_[i]), s.time_s, s.strain, s.relative_viscosity,
-           s.particle_stress_Pa, s.cytoplasm_stress_Pa, s.near_wall_relative_viscosity,
-           static_cast<double>(s.contact_pairs), static_cast<double>(s.pierced_cells)});
+      samples.push_back(static_cast<double>(sample_steps_[i]));
+      const auto values = sample_values(run_.samples[i]);
+      samples.insert(samples.end(), values.begin(), values.end());
       for (std::size_t c = 0; c < cell_count_; ++c) {
-        const auto& cell = run_.cell_samples[i * cell_count_ + c];
-        cells.insert(cells.end(),
-                     {cell.time_s, static_cast<double>(cell.cell), cell.centroid_um.x(),
-                      cell.centroid_um.y(), cell.centroid_um.z(), cell.deformation_index});
+        const auto cell = cell_sample_values(run_.cell_samples[i * cell_count_ + c]);
+        cells.insert(cells.end(), cell.begin(), cell.end());
       }
     }
     archive.put(prefix + "samples", std::move(samples));
     archive.put(prefix + "cell_samples", std::move(cells));
   }
 
+  // Each sample is its step, then its values.
   void restore_state(StateArchive& archive, const std::string& prefix) override {
+    constexpr std::size_t kStepAndValues = 1 + kShearedSampleValues;
     const auto samples = archive.take(prefix + "samples", std::nullopt);
-    if (samples.size() % kShearedSampleValues != 0) {
+    if (samples.size() % kStepAndValues != 0) {
       throw InputError(archive.source(), prefix + "samples: not whole samples");
     }
-    const std::size_t count = samples.size() / kShearedSampleValues;
+    const std::size_t count = samples.size() / kStepAndValues;
     const auto cells =
         archive.take(prefix + "cell_samples", count * cell_count_ * kShearedCellSampleValues);
     run_.samples.clear();
@@ -170,16 +211,14 @@ class ShearedSuspensionRecord final : public coupling::StopCriterion {
     sample_steps_.clear();
     run_.samples_with_pierced_cells = 0;
     for (std::size_t i = 0; i < count; ++i) {
-      const auto* v = samples.data() + i * kShearedSampleValues;
-      sample_steps_.push_back(static_cast<std::size_t>(v[0]));
-      run_.samples.push_back({v[1], v[2], v[3], v[4], v[5], v[6], static_cast<std::size_t>(v[7]),
-                              static_cast<std::size_t>(v[8])});
+      const auto* v = samples.data() + i * kStepAndValues;
+      sample_steps_.push_back(count_from(v[0], archive.source(), prefix + "samples"));
+      run_.samples.push_back(sample_from(v + 1, archive.source(), prefix + "samples"));
       if (run_.samples.back().pierced_cells > 0) ++run_.samples_with_pierced_cells;
     }
     for (std::size_t k = 0; k < count * cell_count_; ++k) {
-      const auto* v = cells.data() + k * kShearedCellSampleValues;
-      run_.cell_samples.push_back(
-          {v[0], static_cast<std::size_t>(v[1]), Vec3(v[2], v[3], v[4]), v[5]});
+      run_.cell_samples.push_back(cell_sample_from(cells.data() + k * kShearedCellSampleValues,
+                                                   archive.source(), prefix + "cell_samples"));
     }
   }
 
@@ -212,15 +251,13 @@ void average_samples(ShearedSuspensionRun& run, double fraction) {
 
 namespace {
 
-nlohmann::ordered_json finite_or_null(double value) {
-  return std::isfinite(value) ? nlohmann::ordered_json(value) : nlohmann::ordered_json(nullptr);
-}
-
-nlohmann::ordered_json rows_json(const std::vector<std::vector<double>>& rows) {
+// Rows of numbers as JSON arrays (null for a non-finite one).
+template <class Rows>
+nlohmann::ordered_json rows_json(const Rows& rows) {
   auto json = nlohmann::ordered_json::array();
   for (const auto& row : rows) {
     auto values = nlohmann::ordered_json::array();
-    for (const double value : row) values.push_back(finite_or_null(value));
+    for (const double value : row) values.push_back(number_or_null(value));
     json.push_back(std::move(values));
   }
   return json;
@@ -254,16 +291,10 @@ std::vector<std::vector<double>> rows_from(const nlohmann::json& record, const c
 }  // namespace
 
 nlohmann::ordered_json sheared_suspension_record(const ShearedSuspensionRun& run) {
-  std::vector<std::vector<double>> samples, cells;
-  for (const auto& s : run.samples) {
-    samples.push_back({s.time_s, s.strain, s.relative_viscosity, s.particle_stress_Pa,
-                       s.cytoplasm_stress_Pa, s.near_wall_relative_viscosity,
-                       static_cast<double>(s.contact_pairs), static_cast<double>(s.pierced_cells)});
-  }
-  for (const auto& c : run.cell_samples) {
-    cells.push_back({c.time_s, static_cast<double>(c.cell), c.centroid_um.x(), c.centroid_um.y(),
-                     c.centroid_um.z(), c.deformation_index});
-  }
+  std::vector<std::array<double, kShearedSampleValues>> samples;
+  std::vector<std::array<double, kShearedCellSampleValues>> cells;
+  for (const auto& sample : run.samples) samples.push_back(sample_values(sample));
+  for (const auto& cell : run.cell_samples) cells.push_back(cell_sample_values(cell));
   return {{"cell_morphologies", run.cell_morphologies},
           {"gap_um", run.gap_um},
           {"length_um", run.length_um},
@@ -272,9 +303,9 @@ nlohmann::ordered_json sheared_suspension_record(const ShearedSuspensionRun& run
           {"packing_iterations", run.packing_iterations},
           {"plasma_stress_Pa", run.plasma_stress_Pa},
           {"averaged_samples", run.averaged_samples},
-          {"relative_viscosity", finite_or_null(run.relative_viscosity)},
-          {"relative_viscosity_sd", finite_or_null(run.relative_viscosity_sd)},
-          {"near_wall_relative_viscosity", finite_or_null(run.near_wall_relative_viscosity)},
+          {"relative_viscosity", number_or_null(run.relative_viscosity)},
+          {"relative_viscosity_sd", number_or_null(run.relative_viscosity_sd)},
+          {"near_wall_relative_viscosity", number_or_null(run.near_wall_relative_viscosity)},
           {"steps", run.steps},
           {"time_s", run.time_s},
           {"close_contact_steps", run.close_contact_steps},
@@ -290,14 +321,9 @@ nlohmann::ordered_json sheared_suspension_record(const ShearedSuspensionRun& run
 ShearedSuspensionRun sheared_suspension_from_record(const nlohmann::json& record,
                                                     const std::string& source) {
   const auto number = [&](const char* key) { return record_number(record, key, source); };
-  // A count, refused unless a whole number >= 0 (a cast of anything else is undefined).
-  const auto whole = [&](double value, const char* key) {
-    if (!(value >= 0.0 && value == std::floor(value) && value < 1e18)) {
-      throw InputError(source, std::string("\"") + key + "\": not a count");
-    }
-    return static_cast<std::size_t>(value);
+  const auto count = [&](const char* key) {
+    return count_from(number(key), source, std::string("\"") + key + "\"");
   };
-  const auto count = [&](const char* key) { return whole(number(key), key); };
   const auto text = [&](const char* key) {
     if (!record.contains(key) || !record.at(key).is_string()) {
       throw InputError(source, std::string("no string \"") + key + "\"");
@@ -332,12 +358,11 @@ ShearedSuspensionRun sheared_suspension_from_record(const nlohmann::json& record
   run.stop_reason = text("stop_reason");
   run.failure = text("failure");
   run.interrupted = record.value("interrupted", false);
-  for (const auto& v : rows_from(record, "samples", 8, source)) {
-    run.samples.push_back(
-        {v[0], v[1], v[2], v[3], v[4], v[5], whole(v[6], "samples"), whole(v[7], "samples")});
+  for (const auto& v : rows_from(record, "samples", kShearedSampleValues, source)) {
+    run.samples.push_back(sample_from(v.data(), source, "\"samples\""));
   }
-  for (const auto& v : rows_from(record, "cell_samples", 6, source)) {
-    run.cell_samples.push_back({v[0], whole(v[1], "cell_samples"), Vec3(v[2], v[3], v[4]), v[5]});
+  for (const auto& v : rows_from(record, "cell_samples", kShearedCellSampleValues, source)) {
+    run.cell_samples.push_back(cell_sample_from(v.data(), source, "\"cell_samples\""));
   }
   return run;
 }

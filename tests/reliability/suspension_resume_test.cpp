@@ -15,12 +15,14 @@
 #include "coupling/checkpoint.hpp"
 #include "setup/coupling_from_config.hpp"
 #include "setup/suspension_from_config.hpp"
+#include "support/expect_each.hpp"
 #include "support/interrupt_scope.hpp"
 #include "support/scratch_directory.hpp"
 
 namespace rbcsim::cases {
 namespace suspension_resume {
 
+using rbcsim::testing::expect_each_same;
 using rbcsim::testing::interrupt_after_step;
 using rbcsim::testing::InterruptScope;
 using rbcsim::testing::resume_from_checkpoint;
@@ -122,16 +124,9 @@ TEST(SuspensionResume, InterruptedThenResumedRunEndsAsAStraightRun) {
   EXPECT_EQ(resumed.capped_contact_steps, straight.capped_contact_steps);
   EXPECT_EQ(resumed.samples_with_pierced_cells, straight.samples_with_pierced_cells);
   EXPECT_EQ(resumed.force_capped_steps, straight.force_capped_steps);
-  ASSERT_EQ(resumed.samples.size(), straight.samples.size());
-  for (std::size_t i = 0; i < straight.samples.size(); ++i) {
-    SCOPED_TRACE(i);
-    expect_same(resumed.samples[i], straight.samples[i]);
-  }
-  ASSERT_EQ(resumed.cell_samples.size(), straight.cell_samples.size());
-  for (std::size_t i = 0; i < straight.cell_samples.size(); ++i) {
-    SCOPED_TRACE(i);
-    expect_same(resumed.cell_samples[i], straight.cell_samples[i]);
-  }
+  const auto same = [](const auto& a, const auto& b) { expect_same(a, b); };
+  expect_each_same(resumed.samples, straight.samples, same);
+  expect_each_same(resumed.cell_samples, straight.cell_samples, same);
   EXPECT_EQ(resumed.averages.relative_apparent_viscosity,
             straight.averages.relative_apparent_viscosity);
 }
