@@ -22,12 +22,9 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common_options.hpp"
-#include "config/config_sources.hpp"
 #include "coupling/snapshot.hpp"
-#include "io/atomic_file.hpp"
 #include "io/csv_table.hpp"
 #include "io/pvd_collection.hpp"
-#include "io/text_file.hpp"
 #include "membrane/membrane_model.hpp"
 #include "run_directory.hpp"
 #include "setup/cell_from_config.hpp"
@@ -74,7 +71,6 @@ std::string shape_file_name(std::size_t index) {
   return name.data();
 }
 
-constexpr const char* kPointFileName = "point.json";
 constexpr const char* kHistoryFileName = "history.csv";
 
 // Writes each rate's final shape, its point (what a resumed run keeps) and its shape history as it
@@ -95,9 +91,8 @@ class ShapeRecorder {
     coupling::write_cell_snapshot(run_.path() / shape_file_name(rate_index), simulation, 0);
     const auto rate_path = run_.path() / cases::shear_rate_directory(rate_index);
     std::filesystem::create_directories(rate_path);
-    auto record = cases::shear_point_record(point);
-    record["config_sha256"] = fingerprint_;
-    io::write_text_atomically(rate_path / kPointFileName, record.dump(2) + "\n");
+    write_finished_record(rate_path / kRatePointFileName, cases::shear_point_record(point),
+                          fingerprint_);
     io::write_csv_file(rate_path / kHistoryFileName, cases::shear_history_columns(),
                        cases::shear_history_rows(point));
     const std::lock_guard lock(mutex_);
@@ -205,13 +200,10 @@ std::vector<std::optional<cases::ShearPoint>> completed_points(const ShearOption
   const auto fingerprint = config_fingerprint(config);
   for (std::size_t i = 0; i < rate_count; ++i) {
     const auto file =
-        options.checkpoint.resume_directory / cases::shear_rate_directory(i) / kPointFileName;
-    if (!std::filesystem::exists(file)) continue;
-    const auto record = config::parse_json(io::read_text_file(file), file.string());
-    if (record.value("config_sha256", std::string()) != fingerprint) {
-      throw InputError(file.string(), "written by a run with a different config");
+        options.checkpoint.resume_directory / cases::shear_rate_directory(i) / kRatePointFileName;
+    if (const auto record = read_finished_record(file, fingerprint)) {
+      points[i] = cases::shear_point_from_record(*record, file.string());
     }
-    points[i] = cases::shear_point_from_record(record, file.string());
   }
   return points;
 }

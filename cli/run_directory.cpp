@@ -122,6 +122,22 @@ std::string config_fingerprint(const config::Config& config) {
   return fingerprint.hex_digest();
 }
 
+void write_finished_record(const std::filesystem::path& file, nlohmann::ordered_json record,
+                           const std::string& fingerprint) {
+  record["config_sha256"] = fingerprint;
+  io::write_text_atomically(file, record.dump(2) + "\n");
+}
+
+std::optional<nlohmann::json> read_finished_record(const std::filesystem::path& file,
+                                                   const std::string& fingerprint) {
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  auto record = config::parse_json(io::read_text_file(file), file.string());
+  if (record.value("config_sha256", std::string()) != fingerprint) {
+    throw InputError(file.string(), "written by a run with a different config");
+  }
+  return record;
+}
+
 namespace {
 
 void set_checkpoint_file(coupling::CoupledSimulation& simulation, const CheckpointOptions& options,

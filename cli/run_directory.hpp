@@ -79,6 +79,17 @@ void wire_checkpoints_in(const std::filesystem::path& subdirectory,
 // The SHA-256 of the resolved config: what a checkpoint and a resume must agree on.
 std::string config_fingerprint(const config::Config& config);
 
+// What a part of a run that ended keeps for --resume, so that it is not run again: shear's
+// rate_<i>/point.json, one cell's point or a suspension's whole run.
+constexpr const char* kRatePointFileName = "point.json";
+// Writes `record` with the config's fingerprint ("config_sha256"), atomically.
+void write_finished_record(const std::filesystem::path& file, nlohmann::ordered_json record,
+                           const std::string& fingerprint);
+// The record in `file`, or nothing when there is none. InputError naming the file when it
+// cannot be parsed or was written under another config.
+std::optional<nlohmann::json> read_finished_record(const std::filesystem::path& file,
+                                                   const std::string& fingerprint);
+
 // The heading of a command's printed summary: "<command> (<variant>), <morphology>, terms: <the
 // enabled membrane terms>", the terms from the command's result section ("forces_terms").
 std::string summary_heading(const std::string& command, const std::string& variant,

@@ -14,12 +14,9 @@
 #include "cases/sheared_suspension.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
-#include "config/config_sources.hpp"
 #include "coupling/snapshot.hpp"
-#include "io/atomic_file.hpp"
 #include "io/csv_table.hpp"
 #include "io/pvd_collection.hpp"
-#include "io/text_file.hpp"
 #include "mesh/geometry.hpp"
 #include "report/reference_data.hpp"
 #include "run_directory.hpp"
@@ -162,21 +159,18 @@ nlohmann::ordered_json rate_json(const RatePoint& point, std::size_t index) {
   return json;
 }
 
-constexpr const char* kFinishedRateFileName = "point.json";
-
 // A rate that ran to its end (or failed in its physics): kept in rate_<i>/point.json with the
 // config's fingerprint, so that --resume of a sweep does not run it again.
 void write_finished_rate(const std::filesystem::path& rate_path, const RatePoint& point,
                          const std::string& fingerprint) {
   const nlohmann::ordered_json record = {
-      {"config_sha256", fingerprint},
       {"shear_rate_per_s", point.shear_rate_per_s},
       {"time_scale",
        {{"factor", point.compression.factor},
         {"physical_reynolds_number", point.compression.physical_reynolds_number},
         {"simulated_reynolds_number", point.compression.simulated_reynolds_number}}},
       {"run", cases::sheared_suspension_record(point.run)}};
-  io::write_text_atomically(rate_path / kFinishedRateFileName, record.dump(1) + "\n");
+  write_finished_record(rate_path / kRatePointFileName, record, fingerprint);
 }
 
 // With --resume: rate `index` as it ended before, if it did (InputError if its record was
@@ -185,13 +179,11 @@ std::optional<RatePoint> finished_rate(const CheckpointOptions& checkpoint, std:
                                        const std::string& fingerprint) {
   if (checkpoint.resume_directory.empty()) return std::nullopt;
   const auto file =
-      checkpoint.resume_directory / cases::shear_rate_directory(index) / kFinishedRateFileName;
-  if (!std::filesystem::exists(file)) return std::nullopt;
+      checkpoint.resume_directory / cases::shear_rate_directory(index) / kRatePointFileName;
+  const auto found = read_finished_record(file, fingerprint);
+  if (!found) return std::nullopt;
+  const auto& record = *found;
   const auto source = file.string();
-  const auto record = config::parse_json(io::read_text_file(file), source);
-  if (record.value("config_sha256", std::string()) != fingerprint) {
-    throw InputError(source, "written by a run with a different config");
-  }
   if (!record.contains("time_scale") || !record.contains("run")) {
     throw InputError(source, "no \"time_scale\" or \"run\"");
   }
