@@ -80,6 +80,9 @@ shapes::NamedCellSettings named_cell_settings_from(const config::Config& config,
   energy.soft_skeleton_fraction = config.number("mesh.energy.soft_skeleton_fraction");
   energy.volume_stages = config.integer("mesh.energy.volume_stages");
   energy.stiffening_stages = config.integer("mesh.energy.stiffening_stages");
+  energy.continuation_start_area_difference =
+      config.number("mesh.energy.continuation_start_area_difference");
+  energy.continuation_step = config.number("mesh.energy.continuation_step");
   energy.stage_iterations =
       static_cast<std::size_t>(config.integer("mesh.energy.stage_iterations"));
   energy.seed = static_cast<std::uint64_t>(config.integer("mesh.energy.seed"));

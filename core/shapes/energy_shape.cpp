@@ -1,5 +1,6 @@
 #include "shapes/energy_shape.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <optional>
@@ -111,35 +112,6 @@ bool offset_to_reduced_volume(mesh::TriangleMesh& shape, double target) {
   return true;
 }
 
-// One state of a path: what the model holds while FIRE minimises.
-struct Stage {
-  double volume_um3;
-  double skeleton_fraction;
-  std::size_t iterations;
-  double force_tolerance_pN;
-};
-
-std::vector<Stage> stages_of(const EnergyPath& path, const EnergyShapeSettings& settings,
-                             double start_volume_um3) {
-  std::vector<Stage> stages;
-  const double target_volume = volume_for(settings.reduced_volume, settings.area_um2);
-  const double soft = path.soft_deflation ? settings.soft_skeleton_fraction : 1.0;
-  for (int k = 1; k <= settings.volume_stages; ++k) {
-    const double f = static_cast<double>(k) / settings.volume_stages;
-    stages.push_back({start_volume_um3 + f * (target_volume - start_volume_um3), soft,
-                      settings.stage_iterations, settings.stage_force_tolerance_pN});
-  }
-  if (path.soft_deflation) {
-    for (int k = 1; k <= settings.stiffening_stages; ++k) {
-      const double f = static_cast<double>(k) / settings.stiffening_stages;
-      stages.push_back({target_volume, std::pow(soft, 1.0 - f), settings.stage_iterations,
-                        settings.stage_force_tolerance_pN});
-    }
-  }
-  stages.push_back({target_volume, 1.0, settings.max_iterations, settings.force_tolerance_pN});
-  return stages;
-}
-
 membrane::SkeletonParameters scaled(membrane::SkeletonParameters skeleton, double fraction) {
   skeleton.shear_modulus_pN_per_um *= fraction;
   skeleton.area_modulus_pN_per_um *= fraction;
@@ -166,13 +138,15 @@ TrialOutcome run_trial(const EnergyPath& path, std::uint64_t seed, int trial_ind
   outcome.trial.path = std::string(path.name);
   outcome.trial.seed = seed;
   outcome.positions_um = reference.positions_um;
-  const auto stages = stages_of(path, settings, start_volume);
+  const auto stages = energy_stages(path, settings, start_volume);
   try {
     minimise::FireResult last;
     for (std::size_t index = 0; index < stages.size(); ++index) {
       const auto& stage = stages[index];
       model.set_volume_um3(stage.volume_um3);
       model.set_skeleton(scaled(settings.skeleton, stage.skeleton_fraction));
+      model.set_relaxed_curvature_sum_um(
+          membrane::curvature_sum_for(stage.relaxed_area_difference, settings.area_um2));
       // A fresh seeded kick at every stage: a state that the path's last change made a saddle
       // holds no component along the unstable mode after the previous minimisation, and FIRE
       // would stop on it.
@@ -219,14 +193,52 @@ std::string trial_summary(const EnergyShapeTrial& trial, const EnergyShapeSettin
 
 }  // namespace
 
+std::vector<EnergyStage> energy_stages(const EnergyPath& path, const EnergyShapeSettings& settings,
+                                       double start_volume_um3) {
+  std::vector<EnergyStage> stages;
+  const double target_volume = volume_for(settings.reduced_volume, settings.area_um2);
+  const double soft = path.soft_deflation ? settings.soft_skeleton_fraction : 1.0;
+  const double target_a0 = settings.relaxed_area_difference;
+  const double start_a0 =
+      path.area_difference_continuation ? settings.continuation_start_area_difference : target_a0;
+  auto stage = [&](double volume, double fraction, double a0) {
+    return EnergyStage{volume, fraction, a0, settings.stage_iterations,
+                       settings.stage_force_tolerance_pN};
+  };
+  for (int k = 1; k <= settings.volume_stages; ++k) {
+    const double f = static_cast<double>(k) / settings.volume_stages;
+    stages.push_back(
+        stage(start_volume_um3 + f * (target_volume - start_volume_um3), soft, start_a0));
+  }
+  if (path.soft_deflation) {
+    for (int k = 1; k <= settings.stiffening_stages; ++k) {
+      const double f = static_cast<double>(k) / settings.stiffening_stages;
+      stages.push_back(stage(target_volume, std::pow(soft, 1.0 - f), start_a0));
+    }
+  }
+  const int steps =
+      static_cast<int>(std::ceil(std::abs(target_a0 - start_a0) / settings.continuation_step));
+  for (int k = 1; k < steps; ++k) {
+    const double f = static_cast<double>(k) / steps;
+    stages.push_back(stage(target_volume, 1.0, start_a0 + f * (target_a0 - start_a0)));
+  }
+  stages.push_back(
+      {target_volume, 1.0, target_a0, settings.max_iterations, settings.force_tolerance_pN});
+  return stages;
+}
+
 const Registry<EnergyPath>& energy_paths() {
   static const Registry<EnergyPath> paths(
       "energy path",
       {{"soft",
         "deflated with the skeleton's moduli at mesh.energy.soft_skeleton_fraction, then stiffened "
         "(the nearly fluid membrane Lim et al. relax their reference with)",
-        true},
-       {"stiff", "deflated with the full skeleton", false}});
+        true, false},
+       {"stiff", "deflated with the full skeleton", false, false},
+       {"continuation",
+        "deflated with the full skeleton at mesh.energy.continuation_start_area_difference, "
+        "then Delta a0 walked to the shape's in steps of at most mesh.energy.continuation_step",
+        false, true}});
   return paths;
 }
 
@@ -247,7 +259,7 @@ BilayerCoupleParameters bilayer_couple_parameters(const EnergyShapeSettings& set
 
 nlohmann::ordered_json to_json(const EnergyShapeSettings& settings) {
   const auto& skeleton = settings.skeleton;
-  return {
+  nlohmann::ordered_json json = {
       {"membrane_area_um2", settings.area_um2},
       {"reduced_volume", settings.reduced_volume},
       {"relaxed_area_difference", settings.relaxed_area_difference},
@@ -274,6 +286,16 @@ nlohmann::ordered_json to_json(const EnergyShapeSettings& settings) {
       {"redistribution_sweeps", settings.redistribution.iterations},
       {"redistribution_step", settings.redistribution.step_fraction},
   };
+  // Only where a path uses them, so that the settings of shapes made without them (the shipped
+  // meshes' manifest entries) stay what they were.
+  const bool continued = std::ranges::any_of(settings.paths, [](const std::string& name) {
+    return energy_paths().find(name, "mesh.energy.paths").area_difference_continuation;
+  });
+  if (continued) {
+    json["continuation_start_area_difference"] = settings.continuation_start_area_difference;
+    json["continuation_step"] = settings.continuation_step;
+  }
+  return json;
 }
 
 mesh::TriangleMesh oblate_spheroid(int subdivisions, double reduced_volume, double area_um2) {

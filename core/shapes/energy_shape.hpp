@@ -34,6 +34,11 @@ struct EnergyPath {
   std::string_view name;
   std::string_view description;
   bool soft_deflation;  // deflate at soft_skeleton_fraction of the moduli, then stiffen
+  // Deflate at EnergyShapeSettings::continuation_start_area_difference (the discocyte's), then
+  // raise Delta a0 to the shape's in steps of at most continuation_step (Lim et al. walk their
+  // sequence this way): the shape changes through the sequence's own minima instead of the full
+  // drive acting on the near-spherical reference.
+  bool area_difference_continuation;
 };
 const Registry<EnergyPath>& energy_paths();
 
@@ -60,6 +65,9 @@ struct EnergyShapeSettings {
   double soft_skeleton_fraction = 0.01;  // the soft path's deflation moduli, of the full
   int volume_stages = 10;                // equal steps from the reference's volume to the target
   int stiffening_stages = 4;             // geometric steps from soft to full moduli
+  // The continuation path's start and largest step in Delta a0 (EnergyPath).
+  double continuation_start_area_difference = 1.0;
+  double continuation_step = 1.0;
   std::size_t stage_iterations = 3000;   // FIRE iterations per stage, at most
   // A stage ends when no vertex's force exceeds this: the path needs no precise intermediate
   // minima, only the final state does (force_tolerance_pN).
@@ -127,6 +135,21 @@ struct EnergyShape {
   std::vector<EnergyShapeTrial> trials;
   std::size_t best_trial = 0;
 };
+
+// One state of a path: what the model holds while FIRE minimises.
+struct EnergyStage {
+  double volume_um3;
+  double skeleton_fraction;        // of the skeleton's moduli
+  double relaxed_area_difference;  // Delta a0
+  std::size_t iterations;          // at most
+  double force_tolerance_pN;
+};
+
+// The stages `path` takes from the reference of volume `start_volume_um3` to the shape: the
+// deflation, the soft path's stiffening, the continuation's walk in Delta a0, the final
+// minimisation.
+std::vector<EnergyStage> energy_stages(const EnergyPath& path, const EnergyShapeSettings& settings,
+                                       double start_volume_um3);
 
 // Progress: trial index, stage (volume_stages + 1 is the final minimisation), FIRE's state.
 using EnergyShapeProgress =

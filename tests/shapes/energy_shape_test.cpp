@@ -69,6 +69,54 @@ TEST(EnergyShape, SeededTrialsAreReproducibleAndTheLowestWins) {
   EXPECT_EQ(first.trials[2].path, "stiff");
 }
 
+// The continuation path deflates at the discocyte's Delta a0 and then walks it to the shape's: at
+// a shape whose Delta a0 is the start it is the stiff path, stage for stage, and its two settings
+// appear in the settings record only when a path uses them (the shipped meshes' records were
+// written without them, and a run finds a shipped mesh by its record).
+TEST(EnergyShape, TheContinuationPathIsTheStiffPathWhenThereIsNothingToWalk) {
+  shapes::EnergyShapeSettings settings;  // Delta a0 = 1, the continuation's start
+  settings.paths = {"stiff"};
+  const auto stiff = shapes::minimise_shape(2, settings);
+  EXPECT_FALSE(shapes::to_json(settings).contains("continuation_step"));
+  settings.paths = {"continuation"};
+  const auto continued = shapes::minimise_shape(2, settings);
+  EXPECT_TRUE(shapes::to_json(settings).contains("continuation_step"));
+  EXPECT_EQ(continued.mesh.positions_um, stiff.mesh.positions_um);
+  EXPECT_EQ(continued.trials.front().iterations, stiff.trials.front().iterations);
+}
+
+// The continuation walks Delta a0 from the discocyte's to the shape's in equal steps no longer
+// than continuation_step, at the target volume and with the full skeleton, and reaches a minimum
+// of the shape's model: converged, the volume held, its realised area difference above the
+// discocyte's.
+TEST(EnergyShape, TheContinuationPathWalksDeltaA0ToTheShapes) {
+  shapes::EnergyShapeSettings settings;
+  settings.relaxed_area_difference = 3.0;
+  settings.continuation_step = 0.5;
+  const auto& path = shapes::energy_paths().find("continuation", "test");
+  const auto stages = shapes::energy_stages(path, settings, 100.0);
+  ASSERT_EQ(stages.size(), static_cast<std::size_t>(settings.volume_stages) + 4);
+  for (int k = 0; k < settings.volume_stages; ++k) {
+    EXPECT_EQ(stages[static_cast<std::size_t>(k)].relaxed_area_difference, 1.0);
+  }
+  const std::vector<double> walk = {1.5, 2.0, 2.5, 3.0};
+  for (std::size_t k = 0; k < walk.size(); ++k) {
+    const auto& stage = stages[static_cast<std::size_t>(settings.volume_stages) + k];
+    EXPECT_DOUBLE_EQ(stage.relaxed_area_difference, walk[k]);
+    EXPECT_EQ(stage.volume_um3, stages.back().volume_um3);
+    EXPECT_EQ(stage.skeleton_fraction, 1.0);
+  }
+  EXPECT_EQ(stages.back().iterations, settings.max_iterations);
+
+  settings.paths = {"continuation"};
+  const auto shape = shapes::minimise_shape(2, settings);
+  ASSERT_TRUE(shape.trials.front().valid());
+  EXPECT_NEAR(reduced_volume_of(shape.minimum), settings.reduced_volume, 1e-5);
+  settings.relaxed_area_difference = 1.0;
+  const auto disc = shapes::minimise_shape(2, settings);
+  EXPECT_GT(shape.reduced_area_difference, disc.reduced_area_difference);
+}
+
 TEST(EnergyShape, TheDiscocyteIsEvansAndFungsWithinAQuarterOfAnEdge) {
   // The minimum at the discocyte's Delta a0 and Lim's moduli, 642 vertices: nothing of Evans &
   // Fung's shape enters the model, yet its profile lies within 0.15 um of theirs (the issue's

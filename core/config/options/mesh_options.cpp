@@ -157,6 +157,17 @@ void add_energy_path_options(OptionTable& table) {
                    "Geometric steps from the soft to the full skeleton.")
       .at_least(1);
   table
+      .add_number("mesh.energy.continuation_start_area_difference", "",
+                  defaults.continuation_start_area_difference,
+                  "The continuation path deflates at this relaxed area difference (the "
+                  "discocyte's), then raises it to the shape's.")
+      .at_least(shapes::kReachableAreaDifference[0])
+      .at_most(shapes::kReachableAreaDifference[1]);
+  table
+      .add_number("mesh.energy.continuation_step", "", defaults.continuation_step,
+                  "The continuation path's largest step in relaxed area difference.")
+      .above(0.0);
+  table
       .add_integer("mesh.energy.stage_iterations", "", static_cast<int>(defaults.stage_iterations),
                    "FIRE iterations per stage of the path, at most.")
       .at_least(1);
