@@ -9,9 +9,11 @@ namespace {
 // "Shapes from membrane mechanics"): each where the minimum has the class's defining measures.
 // The paths: the soft one is needed for the discocyte (from the stiff one a 642-vertex cell stays
 // a convex oblate of higher energy); on the cups it folds the lip through the wall, so those take
-// the stiff path alone. The echinocytes take the continuation from the discocyte (docs/physics.md,
-// "Shapes from membrane mechanics"): with the full drive on the near-spherical reference the
-// stiff path buys area difference with single-vertex spikes the mesh does not resolve.
+// the stiff path alone. The echinocyte III takes the continuation from the discocyte
+// (docs/physics.md, "Shapes from membrane mechanics"): with the full drive on the near-spherical
+// reference the stiff path buys area difference with single-vertex spikes the mesh does not
+// resolve. The echinocytes I and II keep the stiff path their Delta a0 were placed on: walked
+// from the discocyte, the minimum at Delta a0 9 and 10 is still a flat disc without crenation.
 // The trials: the smooth shapes reach one minimum from every start (both discocyte paths end
 // within 1 % of each other's energy); a spiculated body has many near-degenerate arrangements of
 // its spicules (four seeds at 2562 vertices: 1172.8-1174.4 pN um), so the echinocytes take four
@@ -24,8 +26,8 @@ std::vector<SequenceShape> sequence_entries() {
       {"stomatocyte-II", "a cup with a deep invagination", -4.0, stiff},
       {"stomatocyte-I", "a shelvy cup", 0.0, stiff},
       {"discocyte", "the biconcave disc", 1.0, {"soft", "stiff"}},
-      {"echinocyte-I", "a disc with irregularities on its rim", 9.0, continuation, 4},
-      {"echinocyte-II", "an elliptical body with spicules over its surface", 10.0, continuation, 4},
+      {"echinocyte-I", "a disc with irregularities on its rim", 9.0, stiff, 4},
+      {"echinocyte-II", "an elliptical body with spicules over its surface", 10.0, stiff, 4},
       {"echinocyte-III", "a sphere with regularly spaced sharp spicules, about 30-50", 12.0,
        continuation, 4},
   };
