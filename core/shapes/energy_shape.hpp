@@ -35,9 +35,8 @@ struct EnergyPath {
   std::string_view description;
   bool soft_deflation;  // deflate at soft_skeleton_fraction of the moduli, then stiffen
   // Deflate at EnergyShapeSettings::continuation_start_area_difference (the discocyte's), then
-  // raise Delta a0 to the shape's in steps of at most continuation_step (Lim et al. walk their
-  // sequence this way): the shape changes through the sequence's own minima instead of the full
-  // drive acting on the near-spherical reference.
+  // walk Delta a0 to the shape's in steps of at most continuation_step: the shape changes through
+  // the sequence's own minima instead of the full drive acting on the near-spherical reference.
   bool area_difference_continuation;
 };
 const Registry<EnergyPath>& energy_paths();

@@ -160,7 +160,7 @@ void add_energy_path_options(OptionTable& table) {
       .add_number("mesh.energy.continuation_start_area_difference", "",
                   defaults.continuation_start_area_difference,
                   "The continuation path deflates at this relaxed area difference (the "
-                  "discocyte's), then raises it to the shape's.")
+                  "discocyte's), then walks it to the shape's.")
       .at_least(shapes::kReachableAreaDifference[0])
       .at_most(shapes::kReachableAreaDifference[1]);
   table
