@@ -1,17 +1,11 @@
 // Checkpoint files of a coupled simulation (docs/architecture.md: long runs checkpoint and resume).
 //
-// Layout (little-endian, as in memory on the machines rbcsim runs on):
-//   "RBCSIMCK"                       8 bytes, the magic
-//   uint32 version (kCheckpointVersion)
-//   uint32 n, n bytes                 the config fingerprint of the run that wrote it
-//   uint32 array count, then per array (in name order):
-//     uint32 n, n bytes name;  uint64 count;  count float64 values
-//   64 bytes                          SHA-256 of everything above, hex digits
-// The arrays are CoupledSimulation::save_state's (common/state_archive.hpp): fluid populations as
-// the kernel holds them and their layout (natural or AA-swapped), density, velocity, step counts,
-// every cell's positions and point-advance history, the force-cap monitors and the stop criteria's
-// memory. Written atomically (io/atomic_file.hpp); a kill during the write leaves the previous
-// checkpoint intact.
+// The file's layout: io/state_archive_file.hpp, version kCheckpointVersion. The arrays are
+// CoupledSimulation::save_state's (common/state_archive.hpp): fluid populations as the kernel holds
+// them and their layout (natural or AA-swapped), density, velocity, step counts, every cell's
+// positions and point-advance history, the force-cap monitors and the stop criteria's memory.
+// Written atomically (io/atomic_file.hpp); a kill during the write leaves the previous checkpoint
+// intact.
 //
 // Reading refuses (InputError, exit 2, one line naming the file) a file that is not a
 // checkpoint, of another version, truncated or corrupted (checksum), written under another
