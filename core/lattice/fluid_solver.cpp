@@ -4,6 +4,7 @@
 #include "lattice/lees_edwards.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -332,6 +333,68 @@ std::array<double, 3> FluidSolver::velocity_at(std::size_t node) const {
   return {arrays_.velocity[0][node], arrays_.velocity[1][node], arrays_.velocity[2][node]};
 }
 
+namespace {
+void require_node_range(const LatticeGrid& grid, std::size_t first_node, std::size_t count) {
+  if (first_node > grid.node_count() || count > grid.node_count() - first_node) {
+    throw std::out_of_range("lattice: node range [" + std::to_string(first_node) + ", " +
+                            std::to_string(first_node + count) + ") past the grid's " +
+                            std::to_string(grid.node_count()) + " nodes");
+  }
+}
+
+constexpr std::array<int, kDirections> kEverySlot = {0,  1,  2,  3,  4,  5,  6,  7,  8, 9,
+                                                     10, 11, 12, 13, 14, 15, 16, 17, 18};
+
+std::span<const int> slots_or_all(std::span<const int> slots) {
+  for (const int slot : slots) {
+    if (slot < 0 || slot >= kDirections) {
+      throw std::out_of_range("lattice: population slot " + std::to_string(slot));
+    }
+  }
+  return slots.empty() ? std::span<const int>(kEverySlot) : slots;
+}
+}  // namespace
+
+std::vector<double> FluidSolver::stored_populations(std::size_t first_node, std::size_t count,
+                                                    std::span<const int> slots) const {
+  require_node_range(grid(), first_node, count);
+  const std::span<const int> taken = slots_or_all(slots);
+  std::vector<double> values(taken.size() * count);
+  for (std::size_t s = 0; s < taken.size(); ++s) {
+    const std::size_t slot = taken[s] * arrays_.population_stride + first_node;
+    double* const out = values.data() + s * count;
+    if (arrays_.single()) {
+      std::copy_n(arrays_.single_populations.begin() + slot, count, out);
+    } else {
+      std::copy_n(arrays_.populations.begin() + slot, count, out);
+    }
+  }
+  return values;
+}
+
+void FluidSolver::replace_stored_populations(std::size_t first_node, std::size_t count,
+                                             std::span<const double> values,
+                                             std::span<const int> slots) {
+  require_node_range(grid(), first_node, count);
+  const std::span<const int> taken = slots_or_all(slots);
+  if (values.size() != taken.size() * count) {
+    throw std::out_of_range("lattice: " + std::to_string(values.size()) +
+                            " stored populations for " + std::to_string(taken.size()) +
+                            " slots of " + std::to_string(count) + " nodes");
+  }
+  for (std::size_t s = 0; s < taken.size(); ++s) {
+    const std::size_t slot = taken[s] * arrays_.population_stride + first_node;
+    const double* const in = values.data() + s * count;
+    if (arrays_.single()) {
+      for (std::size_t k = 0; k < count; ++k) {
+        arrays_.single_populations[slot + k] = static_cast<float>(in[k]);
+      }
+    } else {
+      std::copy_n(in, count, arrays_.populations.begin() + slot);
+    }
+  }
+}
+
 double FluidSolver::total_mass() const {
   const LatticeGrid& g = grid();
   const auto rows = static_cast<std::int64_t>(g.row_count());
@@ -379,7 +442,7 @@ PopulationLayout population_layout_from(StateArchive& archive) {
 // differently from the kernel's own next step at Lees-Edwards and wall links, and the resumed run
 // would agree only to rounding.
 void FluidSolver::save_state(StateArchive& archive) const {
-  archive.put("fluid.populations", stored_populations(arrays_));
+  archive.put("fluid.populations", lattice::stored_populations(arrays_));
   archive.put("fluid.layout", {arrays_.layout == PopulationLayout::swapped ? 1.0 : 0.0});
   archive.put("fluid.density", arrays_.density);
   for (int axis = 0; axis < 3; ++axis) {

@@ -164,6 +164,18 @@ class FluidSolver {
   // Pre-collision populations in natural layout, whatever the kernel's current layout.
   std::vector<double> pre_collision_populations() const;
 
+  // A range of nodes' populations as stored, for a halo exchange between processes
+  // (core/parallel): nodes [first_node, first_node + count) in grid order, slot slots[s] of node
+  // first_node + k at [s * count + k] (every slot 0..18 in order when `slots` is empty), in the
+  // kernel's current layout and either precision (single precision's f_i - w_i as doubles,
+  // exactly). Replacing them with what another solver's stored_populations gave makes these slots
+  // that solver's, bit for bit. Throws std::out_of_range for a range past the grid, a slot outside
+  // 0..18 or values of the wrong size.
+  std::vector<double> stored_populations(std::size_t first_node, std::size_t count,
+                                         std::span<const int> slots = {}) const;
+  void replace_stored_populations(std::size_t first_node, std::size_t count,
+                                  std::span<const double> values, std::span<const int> slots = {});
+
   // Checkpoints (common/state_archive.hpp): the populations as the kernel holds them and their
   // layout, the density and velocity of the latest collision, and the step count (the
   // Lees-Edwards offset follows it). Restored as is, so a resumed run is bit-identical after any
