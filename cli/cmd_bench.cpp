@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bench_paper_cases.hpp"
+#include "bench_ranks.hpp"
 #include "bench_reference.hpp"
 #include "bench_table.hpp"
 #include "command_registry.hpp"
@@ -29,6 +30,7 @@
 #include "lattice/benchmark.hpp"
 #include "lattice/d3q19.hpp"
 #include "mesh/cell_shapes.hpp"
+#include "parallel/communicator.hpp"
 #include "setup/cell_from_config.hpp"
 #include "setup/membrane_from_config.hpp"
 
@@ -64,6 +66,9 @@ struct BenchOptions {
   std::vector<int> suspension_cell_counts = kDefaultSuspensionCellCounts;
   std::optional<std::filesystem::path> reference_file;
   std::string paper_cases;  // --paper-cases: empty, "all" or names
+  bool ranks = false;       // --ranks: the distributed lattice only
+  std::vector<int> rank_lattice = {128, 128, 128};  // --ranks-lattice
+  int block_planes = 8;                             // --block-planes
 };
 
 // figure / ours for a time, ours / figure for a throughput: > 1 when rbcsim is faster.
@@ -435,6 +440,22 @@ std::vector<std::string> failed_paper_case_runs(const Json& entries) {
 }
 
 void run_bench(const BenchOptions& options) {
+  if (options.ranks) {
+    RankBenchRequest request;
+    request.lattice = {options.rank_lattice[0], options.rank_lattice[1], options.rank_lattice[2]};
+    request.block_planes = options.block_planes;
+    request.threads_per_process = options.common.threads > 0 ? options.common.threads : 1;
+    request.json = options.common.json;
+    request.quiet = options.common.quiet;
+    request.output_directory = options.common.output_directory;
+    run_rank_bench(request);
+    return;
+  }
+  if (parallel::Communicator::world().size() > 1) {
+    throw InputError("bench",
+                     "on several processes it measures the distributed lattice only: "
+                     "add --ranks");
+  }
   auto paper_request = paper_case_request(options);
   const auto machine = coupling::describe_machine();
   const auto setup = bench_setup(options, machine);
@@ -518,13 +539,29 @@ void attach_bench_command(CLI::App& application) {
                    "(capillary, mills, shear: about an hour on 2 cores) or names, comma-separated "
                    "(capillary-fine: hours); needs --output")
       ->type_name("NAMES");
+  command->add_flag("--ranks", options->ranks,
+                    "Measure only the lattice distributed over the processes of `mpirun -np N`: "
+                    "ms per step against one process in the same run, the halo's share, bytes "
+                    "and messages, and a weak-scaling projection to 512 processes");
+  command
+      ->add_option("--ranks-lattice", options->rank_lattice,
+                   "Extent of the lattice --ranks distributes")
+      ->default_str("128 128 128")
+      ->expected(3)
+      ->type_name("NX NY NZ")
+      ->check(whole_number_at_least(1));
+  command
+      ->add_option("--block-planes", options->block_planes,
+                   "z-planes per block of the distributed lattice (--ranks)")
+      ->default_str("8")
+      ->check(whole_number_at_least(2));
   command->footer(
       "--threads N sets the 'all threads' column (default: every logical CPU); --output DIR also "
       "writes DIR/bench.json; --verbose adds the time of each phase of the coupled step.");
   command->callback([options] { run_bench(*options); });
 }
 
-const bool registered = register_command({"bench", 95, attach_bench_command});
+const bool registered = register_command({"bench", 95, attach_bench_command, true});
 
 }  // namespace
 }  // namespace rbcsim::cli::bench_command

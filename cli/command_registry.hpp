@@ -15,6 +15,9 @@ struct CommandEntry {
   std::string name;
   int rank;  // position in --help (mesh=10, calibrate=20, stretch=30, shear=40, ...)
   std::function<void(CLI::App& application)> attach;
+  // Whether the command runs on several processes (`mpirun -np N rbcsim <name>`); main() refuses
+  // the others there with exit 2 before they start.
+  bool runs_on_processes = false;
 };
 
 // Called from a static initialiser in each cli/cmd_*.cpp; returns true so it can initialise a bool.

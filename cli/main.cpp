@@ -1,6 +1,9 @@
 // rbcsim: entry point. Maps failures onto exit codes (README.md, "Exit codes"):
 // 0 success, 1 runtime failure (instability, NaN), 2 bad input (usage, config, mesh), 130
-// interrupted by SIGINT or SIGTERM (the results so far written).
+// interrupted by SIGINT or SIGTERM (the results so far written). Under `mpirun -np N` (a build
+// with RBCSIM_MPI) every process runs this: bad input, the same on every process, is printed once
+// by rank 0; any other failure is printed by the process it happened on, prefixed with its rank,
+// and stops every process of the run (MPI_Abort) with the same exit code.
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <string>
@@ -8,8 +11,45 @@
 #include "command_registry.hpp"
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
+#include "parallel/communicator.hpp"
+
+namespace {
+
+// Commands that do not run on several processes yet are refused before they start.
+void refuse_on_several_processes(CLI::App& command, int processes) {
+  command.preparse_callback([name = command.get_name(), processes](std::size_t) {
+    throw rbcsim::InputError("rbcsim " + name,
+                             "runs on one process only, not yet under mpirun (" +
+                                 std::to_string(processes) +
+                                 " processes started); `rbcsim bench --ranks` does");
+  });
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
+  if (!rbcsim::parallel::built_with_mpi() && rbcsim::parallel::launcher_process_count() > 1) {
+    std::cerr << "rbcsim: error: started as one of " << rbcsim::parallel::launcher_process_count()
+              << " MPI processes, but this rbcsim was built without MPI (configure with "
+                 "-DRBCSIM_MPI=ON)\n";
+    return rbcsim::kExitBadInput;
+  }
+  const rbcsim::parallel::MpiSession mpi(argc, argv);
+  const auto world = rbcsim::parallel::Communicator::world();
+  // Bad input: identical on every process, said once. Failures: said where they happen, and the
+  // whole run stops, so that no process waits forever for one that has left.
+  const auto bad_input = [&world](const std::string& line) {
+    if (world.is_root()) std::cerr << line << '\n';
+    return rbcsim::kExitBadInput;
+  };
+  const auto failure = [&world](const std::string& line, int code) {
+    if (world.size() == 1) {
+      std::cerr << line << '\n';
+      return code;
+    }
+    std::cerr << "[rank " << world.rank() << "] " << line << '\n';
+    world.abort(code);
+  };
   CLI::App application{
       "rbcsim — red blood cells (discocyte, stomatocyte II, echinocyte III) stretched, sheared\n"
       "and squeezed through capillaries: D3Q19 lattice Boltzmann plasma, six-force membrane,\n"
@@ -17,7 +57,12 @@ int main(int argc, char** argv) {
       "rbcsim"};
   application.set_version_flag("--version", std::string("rbcsim ") + RBCSIM_VERSION);
   application.require_subcommand(1);
-  for (const auto& command : rbcsim::cli::registered_commands()) command.attach(application);
+  for (const auto& command : rbcsim::cli::registered_commands()) {
+    command.attach(application);
+    if (world.size() > 1 && !command.runs_on_processes) {
+      refuse_on_several_processes(*application.get_subcommand(command.name), world.size());
+    }
+  }
 
   rbcsim::install_interrupt_handlers();
   try {
@@ -31,20 +76,16 @@ int main(int argc, char** argv) {
       level = level->get_subcommands().front();
       help += " " + level->get_name();
     }
-    std::cerr << "rbcsim: error: " << usage.what() << " (see " << help << " --help)\n";
-    return rbcsim::kExitBadInput;
-  } catch (const rbcsim::InputError& bad_input) {
-    std::cerr << "rbcsim: error: " << bad_input.what() << '\n';
-    return rbcsim::kExitBadInput;
-  } catch (const rbcsim::RuntimeFailure& failure) {
-    std::cerr << "rbcsim: failed: " << failure.what() << '\n';
-    return rbcsim::kExitRuntimeFailure;
+    return bad_input("rbcsim: error: " + std::string(usage.what()) + " (see " + help + " --help)");
+  } catch (const rbcsim::InputError& error) {
+    return bad_input("rbcsim: error: " + std::string(error.what()));
+  } catch (const rbcsim::RuntimeFailure& error) {
+    return failure("rbcsim: failed: " + std::string(error.what()), rbcsim::kExitRuntimeFailure);
   } catch (const rbcsim::Interrupted& interrupted) {
-    std::cerr << "rbcsim: stopped: " << interrupted.what() << '\n';
-    return rbcsim::kExitInterrupted;
+    return failure("rbcsim: stopped: " + std::string(interrupted.what()), rbcsim::kExitInterrupted);
   } catch (const std::exception& unexpected) {
-    std::cerr << "rbcsim: internal error: " << unexpected.what() << '\n';
-    return rbcsim::kExitRuntimeFailure;
+    return failure("rbcsim: internal error: " + std::string(unexpected.what()),
+                   rbcsim::kExitRuntimeFailure);
   }
   return rbcsim::kExitSuccess;
 }

@@ -1,0 +1,180 @@
+// The lattice Boltzmann fluid across processes: each process runs the ordinary FluidSolver (any
+// kernel, either precision, Lees-Edwards in y) on its slab of z-planes (block_decomposition.hpp)
+// plus kHaloPlanes ghost planes on each side, which the halo exchange fills from the neighbours.
+// Two exchanges, a reference and an optimised twin (HaloScheme), both exact:
+//
+// - full state, before every step: the neighbours' two boundary planes, every population as
+//   stored and the force density, into the two ghost planes. A ghost node then collides exactly as
+//   its owner does, and the inner ghost plane gathers only exact values, so what it streams into
+//   the slab is what the owner's node streams there; the outer plane's garbage (it gathers across
+//   the local wrap) only lands in ghost planes. Any kernel.
+// - crossing populations, for the AA kernel (optimised_kernel.hpp) without a Lees-Edwards plane
+//   (whose crossing populations take their source's density and velocity, which a ghost plane
+//   only has exactly with the full state): nothing at its local step
+//   (node by node), and at its streaming step only the five populations that cross each face, one
+//   plane: before it, the post-collision populations leaving the boundary plane into the
+//   neighbour's ghost plane (which its boundary nodes gather from); after it, what the boundary
+//   nodes scattered into their ghost plane back into the neighbour's boundary plane, over the
+//   ghost's own (meaningless) scatter, except where the ghost node is a wall (the boundary node
+//   bounced that population back itself). 10 of the 76 plane-populations per face and two steps the
+//   full state moves, and no force density: the ghosts' collisions never reach the slab.
+//
+// Either way every node of a slab computes what the same node of one undivided solver computes,
+// from the same values in the same order: the state is bit-identical on any number of processes,
+// and to FluidSolver on the whole lattice (tests/parallel).
+//
+// The lattice is periodic in z, as FluidSolver's is: the lowest slab's lower neighbour is the
+// highest slab. Checkpoints take the undivided solver's form (save_state), so they do not depend on
+// the process count. Not distributed yet: a viscosity contrast, inlets and outlets, interpolated
+// wall links, cells (the immersed boundary). Densities and velocities are the slab's own; the
+// ghost planes' are not kept.
+#pragma once
+
+#include "common/state_archive.hpp"
+#include "lattice/fluid_solver.hpp"
+#include "lattice/lattice_grid.hpp"
+#include "parallel/block_decomposition.hpp"
+#include "parallel/communicator.hpp"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace rbcsim::parallel {
+
+inline constexpr int kHaloPlanes = 2;
+inline constexpr std::uint32_t kFluidCheckpointVersion = 1;
+
+enum class HaloScheme {
+  automatic,  // crossing populations where they fit, else the full state
+  full_state,
+  crossing_populations,  // the optimised kernel without a Lees-Edwards plane
+};
+
+// Whether the node at global (x, y, z) is a resting wall (half-way bounce-back).
+using WallPredicate = std::function<bool(int x, int y, int z)>;
+
+// What the halo exchanges of this process cost so far.
+struct HaloCounters {
+  std::size_t exchanges = 0;  // one per step
+  std::size_t messages = 0;   // sent by this process
+  std::size_t bytes = 0;      // sent by this process
+  double seconds = 0.0;       // packing, sending, receiving and unpacking
+};
+
+class DistributedFluid {
+ public:
+  // Every process of `communicator` constructs it with the same arguments (collective). Blocks of
+  // `block_planes` planes, weighted by their fluid nodes. Throws rbcsim::InputError for a
+  // decomposition that does not fit (block_decomposition.hpp) or a setting not distributed yet
+  // (a viscosity contrast), std::logic_error for crossing populations where they do not fit.
+  DistributedFluid(Communicator communicator, lattice::LatticeGrid global, int block_planes,
+                   lattice::FluidParameters parameters, const WallPredicate& is_wall = {},
+                   HaloScheme scheme = HaloScheme::automatic);
+  HaloScheme halo_scheme() const { return scheme_; }
+
+  const Communicator& communicator() const { return communicator_; }
+  const lattice::LatticeGrid& global_grid() const { return global_; }
+  const BlockDecomposition& decomposition() const { return decomposition_; }
+  // This process's planes [z_begin(), z_end()) of the global lattice.
+  int z_begin() const { return decomposition_.z_begin(communicator_.rank()); }
+  int z_end() const { return decomposition_.z_end(communicator_.rank()); }
+  // The local solver: the slab with its ghost planes (global plane z at local z - z_begin() +
+  // kHaloPlanes). Read densities and velocities of the slab's own planes; the ghost planes'
+  // values are the neighbours' business.
+  lattice::FluidSolver& local() { return local_; }
+  const lattice::FluidSolver& local() const { return local_; }
+  // The local index of global node (x, y, z), for z in [z_begin() - kHaloPlanes, z_end() +
+  // kHaloPlanes) (not wrapped).
+  std::size_t local_node(int x, int y, int z) const;
+
+  // Equilibrium at rest or moving, every node of the slab and its ghosts.
+  void initialise_equilibrium(double density, const std::array<double, 3>& velocity);
+  // Equilibrium at the density and velocity `state` gives for each global node (x, y, z).
+  struct NodeState {
+    double density = 1.0;
+    std::array<double, 3> velocity = {0.0, 0.0, 0.0};
+  };
+  void initialise_equilibrium(const std::function<NodeState(int x, int y, int z)>& state);
+  // The local force density (grid order of the local solver): add forces at the slab's own nodes;
+  // the next step copies the ghost planes' from the neighbours.
+  lattice::VectorField& force_density();
+
+  // Collective: the halo exchange, then one step of the local solver.
+  void step();
+  void advance(std::size_t steps);
+
+  // Collective. The sum of the populations of every fluid node: per plane in grid order, the
+  // planes in global order on rank 0, the same value returned on every process.
+  double total_mass() const;
+  // Collective. Rank 0: the populations of the whole lattice as stored, population i of global
+  // node n at [i * node_count + n] (FluidSolver::stored_populations(0, node_count)'s order);
+  // other ranks: empty.
+  std::vector<double> gather_stored_populations() const;
+  // Collective. Rank 0: the SHA-256 of gather_stored_populations()'s bytes; other ranks: empty.
+  std::string state_sha256() const;
+  // Collective. Throws rbcsim::RuntimeFailure on every process if a fluid node of any slab has a
+  // non-finite velocity, naming the global node on the process that found it.
+  void require_finite_velocity() const;
+
+  // Collective checkpoints in the undivided solver's form (FluidSolver::save_state's arrays over
+  // the whole lattice, global order): written on N processes, restored on M, or into one
+  // FluidSolver, and back. save_state fills `archive` on rank 0 (nothing elsewhere);
+  // restore_state takes rank 0's archive (the others' is not read) and throws
+  // rbcsim::InputError on every process, naming the archive on rank 0, if an array is missing or
+  // does not fit this lattice. The geometry is not saved: restore into a fluid set up the same way.
+  void save_state(StateArchive& archive) const;
+  void restore_state(StateArchive& archive);
+  // The same through a checkpoint file (io/state_archive_file.hpp, version
+  // kFluidCheckpointVersion), written and read by rank 0. Reading throws rbcsim::InputError on
+  // every process for a file that is missing, corrupt, of another version or fingerprint, or
+  // that does not fit.
+  void write_checkpoint(const std::filesystem::path& file,
+                        std::string_view config_fingerprint) const;
+  void read_checkpoint(const std::filesystem::path& file, std::string_view config_fingerprint);
+
+  const HaloCounters& halo_counters() const { return counters_; }
+
+ private:
+  // A per-node field of the local solver with `components` arrays of the local node count, back
+  // to back: rank 0 gets the slabs' own planes in global order (components arrays of the global
+  // node count), the others nothing.
+  std::vector<double> gather_field(std::span<const double> local, int components) const;
+  // The reverse, ghost planes included (wrapped around the lattice): rank 0's global field cut
+  // into every process's local field.
+  std::vector<double> scatter_field(std::span<const double> global, int components) const;
+  std::vector<double> pack_planes(int local_z, int planes) const;
+  void unpack_planes(int local_z, int planes, const std::vector<double>& values);
+  void exchange_full_state();
+  // Sends slots `up_slots` of local plane `up_from` to the upper neighbour's plane `up_to` and
+  // slots `down_slots` of `down_from` to the lower neighbour's `down_to`. With masks (one entry
+  // per received value), only the values whose entry is set replace the plane's own.
+  void exchange_slots(int up_from, int up_to, std::span<const int> up_slots, int down_from,
+                      int down_to, std::span<const int> down_slots,
+                      const std::vector<char>* up_mask = nullptr,
+                      const std::vector<char>* down_mask = nullptr);
+  // For the boundary plane next to the ghost plane `ghost` and the slots `slots` (pointing from
+  // the ghost into the slab): whether each value arrives over a plain fluid link from the ghost
+  // plane, so that after the streaming step it is the ghost's scatter, to be replaced by the
+  // neighbour's. Not so where the ghost node is a wall: the boundary node bounced the population
+  // back itself.
+  std::vector<char> streamed_from_ghost(int ghost, std::span<const int> slots) const;
+
+  Communicator communicator_;
+  lattice::LatticeGrid global_;
+  BlockDecomposition decomposition_;
+  lattice::FluidSolver local_;
+  HaloScheme scheme_;
+  std::vector<char> bottom_from_ghost_;  // streamed_from_ghost of the lowest plane, up slots
+  std::vector<char> top_from_ghost_;     // of the highest plane, down slots
+  bool force_field_ = false;
+  HaloCounters counters_;
+};
+
+}  // namespace rbcsim::parallel

@@ -1,0 +1,149 @@
+#include "distributed_cases.hpp"
+
+#include <array>
+#include <cmath>
+#include <memory>
+#include <numbers>
+
+namespace rbcsim::parallel::testing {
+
+namespace {
+
+bool channel_wall(int /*x*/, int y, int /*z*/) { return y == 0 || y == kCaseNy - 1; }
+
+// A start that varies along every axis, z above all (a flow uniform in z would hide a halo that
+// mixes up planes).
+DistributedFluid::NodeState initial_state(int x, int y, int z) {
+  const double phase = 2.0 * std::numbers::pi * z / kCaseNz;
+  return {1.0 + 0.01 * std::cos(phase + 0.2 * x),
+          {0.02 * std::sin(phase) + 0.003 * y, 0.01 * std::cos(2.0 * phase),
+           0.015 * std::sin(phase + x)}};
+}
+
+// A force density that differs at every node and step, the same wherever it is computed.
+std::array<double, 3> test_force(int x, int y, int z, std::size_t step) {
+  const double phase = 0.3 * x + 0.7 * y + 1.1 * z + 0.05 * static_cast<double>(step);
+  return {1e-5 * std::sin(phase), 2e-5 * std::cos(1.3 * phase), -1e-5 * std::sin(0.7 * phase)};
+}
+
+}  // namespace
+
+std::vector<DistributedCase> distributed_cases() {
+  std::vector<DistributedCase> cases;
+  lattice::FluidParameters channel;
+  channel.body_force = {1e-5, 0.0, 2e-6};
+  cases.push_back({"aa_double_channel", channel, true, false});
+  lattice::FluidParameters single = channel;
+  single.precision = lattice::Precision::single_precision;
+  cases.push_back({"aa_single_channel", single, true, false});
+  lattice::FluidParameters reference = channel;
+  reference.kernel = "reference";
+  cases.push_back({"reference_channel", reference, true, false});
+  cases.push_back({"aa_force_field", channel, true, true});
+  lattice::FluidParameters sheared;
+  sheared.lees_edwards_velocity = 0.02;
+  cases.push_back({"aa_lees_edwards", sheared, false, false});
+  // The reference twin of the AA kernel's crossing-populations halo.
+  const std::size_t aa_cases = cases.size();
+  for (std::size_t k = 0; k < aa_cases; ++k) {
+    if (cases[k].parameters.kernel != "optimised" || cases[k].parameters.lees_edwards_velocity) {
+      continue;  // the full state already
+    }
+    DistributedCase full = cases[k];
+    full.name += "_full_state_halo";
+    full.scheme = HaloScheme::full_state;
+    cases.push_back(full);
+  }
+  return cases;
+}
+
+std::unique_ptr<lattice::FluidSolver> make_undivided(const DistributedCase& flow) {
+  const lattice::LatticeGrid grid(kCaseNx, kCaseNy, kCaseNz);
+  auto solver = std::make_unique<lattice::FluidSolver>(grid, flow.parameters);
+  for (int z = 0; z < kCaseNz; ++z) {
+    for (int y = 0; y < kCaseNy; ++y) {
+      for (int x = 0; x < kCaseNx; ++x) {
+        if (flow.walls && channel_wall(x, y, z)) solver->set_wall(grid.index(x, y, z));
+      }
+    }
+  }
+  std::vector<double> density(grid.node_count());
+  lattice::VectorField velocity;
+  for (auto& component : velocity) component.resize(grid.node_count());
+  for (int z = 0; z < kCaseNz; ++z) {
+    for (int y = 0; y < kCaseNy; ++y) {
+      for (int x = 0; x < kCaseNx; ++x) {
+        const auto state = initial_state(x, y, z);
+        density[grid.index(x, y, z)] = state.density;
+        for (int axis = 0; axis < 3; ++axis) {
+          velocity[axis][grid.index(x, y, z)] = state.velocity[axis];
+        }
+      }
+    }
+  }
+  solver->initialise_equilibrium(density, velocity);
+  return solver;
+}
+
+void advance_undivided(const DistributedCase& flow, lattice::FluidSolver& solver,
+                       std::size_t steps) {
+  const lattice::LatticeGrid& grid = solver.grid();
+  for (std::size_t s = 0; s < steps; ++s) {
+    const std::size_t step = solver.time();
+    if (flow.force_field) {
+      auto& force = solver.force_density();
+      for (int z = 0; z < kCaseNz; ++z) {
+        for (int y = 0; y < kCaseNy; ++y) {
+          for (int x = 0; x < kCaseNx; ++x) {
+            const auto f = test_force(x, y, z, step);
+            for (int axis = 0; axis < 3; ++axis) force[axis][grid.index(x, y, z)] += f[axis];
+          }
+        }
+      }
+    }
+    solver.step();
+  }
+}
+
+std::unique_ptr<DistributedFluid> make_distributed(const DistributedCase& flow,
+                                                   const Communicator& communicator) {
+  const WallPredicate walls = flow.walls ? WallPredicate(channel_wall) : WallPredicate();
+  auto fluid = std::make_unique<DistributedFluid>(communicator,
+                                                  lattice::LatticeGrid(kCaseNx, kCaseNy, kCaseNz),
+                                                  2, flow.parameters, walls, flow.scheme);
+  fluid->initialise_equilibrium(initial_state);
+  return fluid;
+}
+
+void advance_distributed(const DistributedCase& flow, DistributedFluid& fluid, std::size_t steps) {
+  for (std::size_t s = 0; s < steps; ++s) {
+    const std::size_t step = fluid.local().time();
+    if (flow.force_field) {
+      auto& force = fluid.force_density();
+      for (int z = fluid.z_begin(); z < fluid.z_end(); ++z) {
+        for (int y = 0; y < kCaseNy; ++y) {
+          for (int x = 0; x < kCaseNx; ++x) {
+            const auto f = test_force(x, y, z, step);
+            for (int axis = 0; axis < 3; ++axis) force[axis][fluid.local_node(x, y, z)] += f[axis];
+          }
+        }
+      }
+    }
+    fluid.step();
+  }
+}
+
+std::vector<double> run_undivided(const DistributedCase& flow) {
+  auto solver = make_undivided(flow);
+  advance_undivided(flow, *solver, kCaseSteps);
+  return solver->stored_populations(0, solver->grid().node_count());
+}
+
+std::vector<double> run_distributed(const DistributedCase& flow, const Communicator& communicator) {
+  auto fluid = make_distributed(flow, communicator);
+  advance_distributed(flow, *fluid, kCaseSteps);
+  fluid->require_finite_velocity();
+  return fluid->gather_stored_populations();
+}
+
+}  // namespace rbcsim::parallel::testing

@@ -1,0 +1,54 @@
+// Flows run on the distributed lattice and on one undivided FluidSolver, for the equality tests of
+// tests/parallel (one process) and tests/parallel/mpi (1-4 processes under mpirun).
+#pragma once
+
+#include "lattice/fluid_solver.hpp"
+#include "parallel/communicator.hpp"
+#include "parallel/distributed_fluid.hpp"
+
+#include <cstddef>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace rbcsim::parallel::testing {
+
+struct DistributedCase {
+  std::string name;
+  lattice::FluidParameters parameters;
+  bool walls = true;         // walls at y = 0 and y = ny - 1 (a channel)
+  bool force_field = false;  // a force density that varies in space and time, added every step
+  HaloScheme scheme = HaloScheme::automatic;
+};
+
+// GoogleTest prints a case by its name.
+inline void PrintTo(const DistributedCase& flow, std::ostream* out) { *out << flow.name; }
+
+// Every case of the equality tests: the AA kernel in double and single precision, the reference
+// kernel, a force field, Lees-Edwards; the AA kernel's cases with both halo schemes.
+std::vector<DistributedCase> distributed_cases();
+
+inline constexpr int kCaseNx = 6;
+inline constexpr int kCaseNy = 7;
+inline constexpr int kCaseNz = 12;
+// An odd count: the AA kernel ends in its swapped layout.
+inline constexpr std::size_t kCaseSteps = 25;
+
+// The case's lattice, walls and start, undivided or on the distributed lattice (blocks of 2
+// planes), and steps of it (the force field, if any, added before each).
+std::unique_ptr<lattice::FluidSolver> make_undivided(const DistributedCase& flow);
+void advance_undivided(const DistributedCase& flow, lattice::FluidSolver& solver,
+                       std::size_t steps);
+std::unique_ptr<DistributedFluid> make_distributed(const DistributedCase& flow,
+                                                   const Communicator& communicator);
+void advance_distributed(const DistributedCase& flow, DistributedFluid& fluid, std::size_t steps);
+
+// The populations as stored after kCaseSteps steps on the undivided solver (FluidSolver's
+// stored_populations(0, node_count) order).
+std::vector<double> run_undivided(const DistributedCase& flow);
+// The same on the distributed lattice (blocks of 2 planes); rank 0 gets the gathered state, the
+// other ranks an empty vector.
+std::vector<double> run_distributed(const DistributedCase& flow, const Communicator& communicator);
+
+}  // namespace rbcsim::parallel::testing

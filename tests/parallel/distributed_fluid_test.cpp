@@ -1,0 +1,109 @@
+// The fluid on the distributed lattice against the same fluid on one undivided FluidSolver, on one
+// process (tests/parallel/mpi runs the same cases on 1-4 processes under mpirun).
+#include "parallel/distributed_fluid.hpp"
+#include "common/errors.hpp"
+#include "distributed_cases.hpp"
+#include "lattice/d3q19.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace rbcsim::parallel {
+namespace {
+
+class OneProcess : public ::testing::TestWithParam<testing::DistributedCase> {};
+
+// Bit for bit: every node of the slab computes what the undivided solver's node computes. A halo
+// one plane thin, a ghost plane left stale, or the exchange after the step instead of before
+// breaks this within a few steps.
+TEST_P(OneProcess, SlabWithGhostPlanesIsTheUndividedLatticeBitForBit) {
+  const auto undivided = testing::run_undivided(GetParam());
+  const auto distributed = testing::run_distributed(GetParam(), Communicator::self());
+  ASSERT_EQ(distributed.size(), undivided.size());
+  std::size_t differing = 0;
+  for (std::size_t k = 0; k < undivided.size(); ++k) {
+    if (distributed[k] != undivided[k]) ++differing;
+  }
+  EXPECT_EQ(differing, 0u) << "of " << undivided.size() << " stored populations";
+}
+
+INSTANTIATE_TEST_SUITE_P(DistributedFluid, OneProcess,
+                         ::testing::ValuesIn(testing::distributed_cases()),
+                         [](const auto& parameter) { return parameter.param.name; });
+
+TEST(DistributedFluid, TheFullStateHaloSendsTwoPlanesEachWayEveryStep) {
+  DistributedFluid fluid(Communicator::self(), lattice::LatticeGrid(5, 4, 8), 4,
+                         lattice::FluidParameters{}, {}, HaloScheme::full_state);
+  fluid.initialise_equilibrium(1.0, {0.0, 0.0, 0.0});
+  fluid.advance(3);
+  const auto& counters = fluid.halo_counters();
+  EXPECT_EQ(counters.exchanges, 3u);
+  EXPECT_EQ(counters.messages, 6u);
+  EXPECT_EQ(counters.bytes, 3u * 2u * (2u * 5u * 4u) * lattice::kDirections * sizeof(double));
+}
+
+TEST(DistributedFluid, TheAaKernelsHaloSendsFiveCrossingPopulationsOfOnePlaneAtItsStreamingStep) {
+  DistributedFluid fluid(Communicator::self(), lattice::LatticeGrid(5, 4, 8), 4,
+                         lattice::FluidParameters{});
+  ASSERT_EQ(fluid.halo_scheme(), HaloScheme::crossing_populations);
+  fluid.initialise_equilibrium(1.0, {0.0, 0.0, 0.0});
+  fluid.advance(3);  // local, streaming (exchanges before and after), local
+  const auto& counters = fluid.halo_counters();
+  EXPECT_EQ(counters.exchanges, 2u);
+  EXPECT_EQ(counters.messages, 4u);
+  EXPECT_EQ(counters.bytes, 2u * 2u * (5u * 4u) * 5u * sizeof(double));
+}
+
+TEST(DistributedFluid, TheCrossingHaloNeedsTheAaKernelAndNoSlidingPlane) {
+  lattice::FluidParameters reference;
+  reference.kernel = "reference";
+  EXPECT_THROW(DistributedFluid(Communicator::self(), lattice::LatticeGrid(3, 3, 4), 2, reference,
+                                {}, HaloScheme::crossing_populations),
+               std::logic_error);
+  lattice::FluidParameters sheared;
+  sheared.lees_edwards_velocity = 0.01;
+  EXPECT_THROW(DistributedFluid(Communicator::self(), lattice::LatticeGrid(3, 3, 4), 2, sheared, {},
+                                HaloScheme::crossing_populations),
+               std::logic_error);
+  EXPECT_EQ(DistributedFluid(Communicator::self(), lattice::LatticeGrid(3, 3, 4), 2, sheared)
+                .halo_scheme(),
+            HaloScheme::full_state);
+}
+
+TEST(DistributedFluid, MassOfAClosedChannelIsKept) {
+  lattice::FluidParameters parameters;
+  parameters.body_force = {1e-4, 0.0, 0.0};
+  DistributedFluid fluid(Communicator::self(), lattice::LatticeGrid(4, 6, 6), 2, parameters,
+                         [](int, int y, int) { return y == 0 || y == 5; });
+  fluid.initialise_equilibrium(1.0, {0.0, 0.0, 0.0});
+  const double fluid_nodes = 4.0 * 4.0 * 6.0;
+  EXPECT_NEAR(fluid.total_mass(), fluid_nodes, 1e-12 * fluid_nodes);
+  fluid.advance(40);
+  EXPECT_NEAR(fluid.total_mass(), fluid_nodes, 1e-11 * fluid_nodes);
+}
+
+TEST(DistributedFluid, ANonFiniteVelocityStopsTheRunNamingTheGlobalNode) {
+  DistributedFluid fluid(Communicator::self(), lattice::LatticeGrid(3, 3, 4), 2,
+                         lattice::FluidParameters{});
+  fluid.initialise_equilibrium(1.0, {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0});
+  try {
+    fluid.require_finite_velocity();
+    FAIL() << "a NaN velocity passed";
+  } catch (const RuntimeFailure& failure) {
+    EXPECT_NE(std::string(failure.what()).find("node (0, 0, 0)"), std::string::npos)
+        << failure.what();
+  }
+}
+
+TEST(DistributedFluid, RefusesAViscosityContrastItDoesNotDistribute) {
+  lattice::FluidParameters parameters;
+  parameters.inner_viscosity_ratio = 5.0;
+  EXPECT_THROW(DistributedFluid(Communicator::self(), lattice::LatticeGrid(3, 3, 4), 2, parameters),
+               InputError);
+}
+
+}  // namespace
+}  // namespace rbcsim::parallel

@@ -1,0 +1,101 @@
+// The equality cases of tests/parallel on every process of an MPI run: ctest starts this under
+// `mpiexec -n 1/2/3/4` (label `mpi`). Rank 0 compares the gathered state of the distributed lattice
+// with the undivided solver's, bit for bit: so the state is the same on any number of processes;
+// and a checkpoint written on all of them resumes on fewer.
+// Only rank 0 prints; the exit code is 1 if any rank failed a test.
+#include "distributed_cases.hpp"
+#include "parallel/communicator.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace rbcsim::parallel {
+namespace {
+
+class Processes : public ::testing::TestWithParam<testing::DistributedCase> {};
+
+TEST_P(Processes, DistributedStateIsTheUndividedLatticesBitForBit) {
+  const Communicator world = Communicator::world();
+  ASSERT_TRUE(MpiSession::active() || world.size() == 1);
+  const auto distributed = testing::run_distributed(GetParam(), world);
+  if (!world.is_root()) return;
+  const auto undivided = testing::run_undivided(GetParam());
+  ASSERT_EQ(distributed.size(), undivided.size());
+  std::size_t differing = 0;
+  for (std::size_t k = 0; k < undivided.size(); ++k) {
+    if (distributed[k] != undivided[k]) ++differing;
+  }
+  EXPECT_EQ(differing, 0u) << "of " << undivided.size() << " stored populations on " << world.size()
+                           << " processes";
+}
+
+INSTANTIATE_TEST_SUITE_P(DistributedFluid, Processes,
+                         ::testing::ValuesIn(testing::distributed_cases()),
+                         [](const auto& parameter) { return parameter.param.name; });
+
+// Written on every process of the run, resumed on the first half of them (4 -> 2, 3 -> 2, 2 -> 1)
+// and on rank 0 alone: the uninterrupted undivided run's state, bit for bit.
+TEST(ProcessesCheckpoint, WrittenOnAllResumesOnFewerProcessesBitForBit) {
+  constexpr std::size_t kBefore = 13;
+  constexpr std::size_t kAfter = 12;
+  testing::DistributedCase flow;
+  for (const auto& candidate : testing::distributed_cases()) {
+    if (candidate.name == "aa_force_field") flow = candidate;
+  }
+  const Communicator world = Communicator::world();
+  double root_pid = static_cast<double>(::getpid());
+  world.broadcast_from_root(std::span<double>(&root_pid, 1));
+  const auto file =
+      std::filesystem::temp_directory_path() /
+      ("rbcsim_mpi_checkpoint_" + std::to_string(static_cast<long>(root_pid)) + ".bin");
+  auto fluid = testing::make_distributed(flow, world);
+  testing::advance_distributed(flow, *fluid, kBefore);
+  fluid->write_checkpoint(file, "mpi test");
+
+  std::vector<double> expected;
+  if (world.is_root()) {
+    auto uninterrupted = testing::make_undivided(flow);
+    testing::advance_undivided(flow, *uninterrupted, kBefore + kAfter);
+    expected = uninterrupted->stored_populations(0, uninterrupted->grid().node_count());
+  }
+  const int half = (world.size() + 1) / 2;
+  const Communicator part = world.split(world.rank() < half ? 0 : 1);
+  if (world.rank() < half) {
+    auto resumed = testing::make_distributed(flow, part);
+    resumed->read_checkpoint(file, "mpi test");
+    testing::advance_distributed(flow, *resumed, kAfter);
+    const auto state = resumed->gather_stored_populations();
+    if (world.is_root()) {
+      EXPECT_EQ(state, expected) << "written on " << world.size() << ", resumed on " << half;
+    }
+  }
+  if (world.is_root()) {
+    auto alone = testing::make_distributed(flow, Communicator::self());
+    alone->read_checkpoint(file, "mpi test");
+    testing::advance_distributed(flow, *alone, kAfter);
+    EXPECT_EQ(alone->gather_stored_populations(), expected) << "resumed on one process";
+  }
+  world.barrier();
+  if (world.is_root()) std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace rbcsim::parallel
+
+int main(int argc, char** argv) {
+  rbcsim::parallel::MpiSession session(argc, argv);
+  ::testing::InitGoogleTest(&argc, argv);
+  const auto world = rbcsim::parallel::Communicator::world();
+  if (!world.is_root()) {
+    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
+    delete listeners.Release(listeners.default_result_printer());
+  }
+  const int result = RUN_ALL_TESTS();
+  return world.any(result != 0) ? 1 : 0;
+}
