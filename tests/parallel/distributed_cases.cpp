@@ -2,8 +2,15 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <numbers>
+
+#include "ibm/delta_kernels.hpp"
+#include "ibm/grid_view.hpp"
+#include "ibm/interpolation_stencil.hpp"
+#include "ibm/transfer.hpp"
+#include "parallel/distributed_ibm.hpp"
 
 namespace rbcsim::parallel::testing {
 
@@ -144,6 +151,89 @@ std::vector<double> run_distributed(const DistributedCase& flow, const Communica
   advance_distributed(flow, *fluid, kCaseSteps);
   fluid->require_finite_velocity();
   return fluid->gather_stored_populations();
+}
+
+namespace {
+
+constexpr std::size_t kPoints = 48;
+
+std::vector<Vec3> starting_points() {
+  std::vector<Vec3> points;
+  for (std::size_t k = 0; k < kPoints; ++k) {
+    const double t = static_cast<double>(k);
+    // Spread over the box, some next to the walls, some beyond the periodic seam in z.
+    points.emplace_back(std::fmod(0.37 * t * t + 0.5, kCaseNx),
+                        0.7 + std::fmod(1.91 * t, kCaseNy - 2.4),
+                        -1.5 + std::fmod(2.73 * t + 0.2, kCaseNz + 3.0));
+  }
+  return points;
+}
+
+std::vector<Vec3> spring_forces(const std::vector<Vec3>& points, const std::vector<Vec3>& anchors) {
+  std::vector<Vec3> forces;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    forces.push_back(-2e-3 * (points[k] - anchors[k]) + Vec3(0.0, 0.0, 4e-4));
+  }
+  return forces;
+}
+
+std::vector<double> flat(const std::vector<Vec3>& points) {
+  std::vector<double> values;
+  for (const Vec3& p : points) values.insert(values.end(), {p.x(), p.y(), p.z()});
+  return values;
+}
+
+DistributedCase coupled_channel() {
+  DistributedCase flow = distributed_cases().front();  // the AA kernel in a channel
+  flow.parameters.body_force = {0.0, 0.0, 0.0};
+  return flow;
+}
+
+}  // namespace
+
+CoupledState run_coupled_undivided(std::string_view kernel, std::size_t steps) {
+  const DistributedCase flow = coupled_channel();
+  auto solver = make_undivided(flow);
+  const ibm::GridView grid{kCaseNx, kCaseNy, kCaseNz, true, true, true};
+  std::vector<std::uint8_t> solid(solver->grid().node_count());
+  for (std::size_t node = 0; node < solid.size(); ++node) {
+    solid[node] = solver->boundaries().is_fluid(node) ? 0 : 1;
+  }
+  const std::vector<Vec3> anchors = starting_points();
+  std::vector<Vec3> points = anchors;
+  std::vector<Vec3> velocities(points.size());
+  ibm::InterpolationStencil stencil;
+  const ibm::DeltaKernel& delta = ibm::find_delta_kernel(kernel);
+  for (std::size_t step = 0; step < steps; ++step) {
+    stencil.build(delta, grid, points, solid.data());
+    auto& force = solver->force_density();
+    ibm::spread_forces(stencil, spring_forces(points, anchors), grid, force[0].data(),
+                       force[1].data(), force[2].data());
+    solver->step();
+    const auto& u = solver->velocity();
+    ibm::interpolate_velocity(stencil, grid, u[0].data(), u[1].data(), u[2].data(), velocities);
+    for (std::size_t k = 0; k < points.size(); ++k) points[k] += velocities[k];
+  }
+  return {solver->stored_populations(0, solver->grid().node_count()), flat(points)};
+}
+
+CoupledState run_coupled_distributed(std::string_view kernel, std::size_t steps,
+                                     const Communicator& communicator) {
+  const DistributedCase flow = coupled_channel();
+  auto fluid = make_distributed(flow, communicator);
+  DistributedImmersedBoundary boundary(*fluid, kernel, channel_wall);
+  const std::vector<Vec3> anchors = starting_points();
+  std::vector<Vec3> points = anchors;
+  for (std::size_t step = 0; step < steps; ++step) {
+    boundary.build(points);
+    boundary.spread(spring_forces(points, anchors), *fluid);
+    fluid->step();
+    const std::vector<Vec3> velocities = boundary.interpolate(*fluid);
+    for (std::size_t k = 0; k < points.size(); ++k) points[k] += velocities[k];
+  }
+  CoupledState state{fluid->gather_stored_populations(), {}};
+  if (communicator.is_root()) state.positions = flat(points);
+  return state;
 }
 
 }  // namespace rbcsim::parallel::testing

@@ -10,6 +10,7 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace rbcsim::parallel::testing {
@@ -50,5 +51,18 @@ std::vector<double> run_undivided(const DistributedCase& flow);
 // The same on the distributed lattice (blocks of 2 planes); rank 0 gets the gathered state, the
 // other ranks an empty vector.
 std::vector<double> run_distributed(const DistributedCase& flow, const Communicator& communicator);
+
+// A mini coupled loop: points anchored by springs and pushed along z, so that they cross block
+// boundaries and the periodic seam; their forces spread, the fluid stepped, their velocities
+// interpolated with the same stencil, the points moved (forward Euler); `steps` steps in the
+// channel of the first case, with the IBM kernel `kernel`.
+struct CoupledState {
+  std::vector<double> populations;  // as stored, global order
+  std::vector<double> positions;    // x, y, z of every point
+};
+CoupledState run_coupled_undivided(std::string_view kernel, std::size_t steps);
+// Rank 0 gets the state; the other ranks empty vectors.
+CoupledState run_coupled_distributed(std::string_view kernel, std::size_t steps,
+                                     const Communicator& communicator);
 
 }  // namespace rbcsim::parallel::testing

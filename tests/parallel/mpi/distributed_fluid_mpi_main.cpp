@@ -39,6 +39,25 @@ INSTANTIATE_TEST_SUITE_P(DistributedFluid, Processes,
                          ::testing::ValuesIn(testing::distributed_cases()),
                          [](const auto& parameter) { return parameter.param.name; });
 
+// Points spread and moved across block boundaries and the periodic seam: on any number of
+// processes as on the undivided lattice.
+class ProcessesCoupled : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ProcessesCoupled, PointsAndFluidMoveAsOnTheUndividedLatticeBitForBit) {
+  constexpr std::size_t kSteps = 30;
+  const Communicator world = Communicator::world();
+  const auto distributed = testing::run_coupled_distributed(GetParam(), kSteps, world);
+  if (!world.is_root()) return;
+  const auto undivided = testing::run_coupled_undivided(GetParam(), kSteps);
+  EXPECT_EQ(distributed.positions, undivided.positions) << "on " << world.size() << " processes";
+  EXPECT_EQ(distributed.populations, undivided.populations)
+      << "on " << world.size() << " processes";
+}
+
+INSTANTIATE_TEST_SUITE_P(DistributedImmersedBoundary, ProcessesCoupled,
+                         ::testing::Values("phi2", "phi3", "phi4"),
+                         [](const auto& parameter) { return parameter.param; });
+
 // Written on every process of the run, resumed on the first half of them (4 -> 2, 3 -> 2, 2 -> 1)
 // and on rank 0 alone: the uninterrupted undivided run's state, bit for bit.
 TEST(ProcessesCheckpoint, WrittenOnAllResumesOnFewerProcessesBitForBit) {
