@@ -13,6 +13,7 @@ namespace rbcsim::cli {
 struct RankBenchRequest {
   std::array<int, 3> lattice = {128, 128, 128};
   int block_planes = 8;
+  int cells = 8;  // spheres of 642 vertices measured with the fluid; 0: the fluid alone
   int threads_per_process = 1;
   bool json = false;
   bool quiet = false;

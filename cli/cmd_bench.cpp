@@ -69,6 +69,7 @@ struct BenchOptions {
   bool ranks = false;       // --ranks: the distributed lattice only
   std::vector<int> rank_lattice = {128, 128, 128};  // --ranks-lattice
   int block_planes = 8;                             // --block-planes
+  int rank_cells = 8;                               // --ranks-cells
 };
 
 // figure / ours for a time, ours / figure for a throughput: > 1 when rbcsim is faster.
@@ -444,6 +445,7 @@ void run_bench(const BenchOptions& options) {
     RankBenchRequest request;
     request.lattice = {options.rank_lattice[0], options.rank_lattice[1], options.rank_lattice[2]};
     request.block_planes = options.block_planes;
+    request.cells = options.rank_cells;
     request.threads_per_process = options.common.threads > 0 ? options.common.threads : 1;
     request.json = options.common.json;
     request.quiet = options.common.quiet;
@@ -555,6 +557,12 @@ void attach_bench_command(CLI::App& application) {
                    "z-planes per block of the distributed lattice (--ranks)")
       ->default_str("8")
       ->check(whole_number_at_least(2));
+  command
+      ->add_option("--ranks-cells", options->rank_cells,
+                   "Spheres of 642 vertices whose stencils, spreading and interpolation --ranks "
+                   "also measures on the distributed lattice (0: the fluid alone)")
+      ->default_str("8")
+      ->check(whole_number_at_least(0));
   command->footer(
       "--threads N sets the 'all threads' column (default: every logical CPU); --output DIR also "
       "writes DIR/bench.json; --verbose adds the time of each phase of the coupled step.");
