@@ -19,7 +19,8 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr std::size_t kStepsPerBatch = 5;
+// Even: as many streaming steps as local ones (only the former exchange with the AA kernel).
+constexpr std::size_t kStepsPerBatch = 6;
 constexpr int kBatches = 5;
 constexpr int kProjectedProcesses = 512;
 // The network of the projection's second column: assumed, not measured (a 100 Gb/s InfiniBand

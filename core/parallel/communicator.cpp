@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -49,6 +50,15 @@ struct Communicator::Handle {
 };
 
 namespace {
+// MPI counts and displacements are ints: a message of more values is refused, not wrapped.
+int mpi_count(std::size_t values, const char* what) {
+  if (values > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+    throw RuntimeFailure(std::string("mpi: ") + what + " of " + std::to_string(values) +
+                         " values exceeds MPI's int counts (2^31 - 1)");
+  }
+  return static_cast<int>(values);
+}
+
 void check_mpi(int code, const char* what) {
   if (code == MPI_SUCCESS) return;
   char text[MPI_MAX_ERROR_STRING];
@@ -61,7 +71,9 @@ void check_mpi(int code, const char* what) {
 MpiSession::MpiSession(int& argc, char**& argv) {
   if (!launched_by_mpi()) return;
   // Errors come back as codes (check_mpi turns them into RuntimeFailure), not as MPI's abort.
-  check_mpi(MPI_Init(&argc, &argv), "MPI_Init");
+  // Funneled: OpenMP threads compute, only the main thread calls MPI.
+  int provided = 0;
+  check_mpi(MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
   MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
   session_active = true;
 }
@@ -94,10 +106,11 @@ void Communicator::send_receive(std::span<const double> send, int destination,
     return;
   }
   MPI_Status status;
-  check_mpi(MPI_Sendrecv(send.data(), static_cast<int>(send.size()), MPI_DOUBLE, destination, tag,
-                         receive.data(), static_cast<int>(receive.size()), MPI_DOUBLE, source, tag,
-                         handle_->comm, &status),
-            "MPI_Sendrecv");
+  check_mpi(
+      MPI_Sendrecv(send.data(), mpi_count(send.size(), "a halo message"), MPI_DOUBLE, destination,
+                   tag, receive.data(), mpi_count(receive.size(), "a halo message"), MPI_DOUBLE,
+                   source, tag, handle_->comm, &status),
+      "MPI_Sendrecv");
   int received = 0;
   MPI_Get_count(&status, MPI_DOUBLE, &received);
   if (static_cast<std::size_t>(received) != receive.size()) {
@@ -109,7 +122,7 @@ void Communicator::send_receive(std::span<const double> send, int destination,
 
 std::vector<double> Communicator::gather_to_root(std::span<const double> values) const {
   if (!handle_) return {values.begin(), values.end()};
-  const int count = static_cast<int>(values.size());
+  const int count = mpi_count(values.size(), "a gather");
   std::vector<int> counts(is_root() ? size_ : 0);
   check_mpi(MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, handle_->comm),
             "MPI_Gather");
@@ -118,9 +131,10 @@ std::vector<double> Communicator::gather_to_root(std::span<const double> values)
   if (is_root()) {
     std::size_t total = 0;
     for (int r = 0; r < size_; ++r) {
-      offsets[r] = static_cast<int>(total);
+      offsets[r] = mpi_count(total, "a gather");
       total += static_cast<std::size_t>(counts[r]);
     }
+    mpi_count(total, "a gather");
     gathered.resize(total);
   }
   check_mpi(MPI_Gatherv(values.data(), count, MPI_DOUBLE, gathered.data(), counts.data(),
@@ -145,8 +159,8 @@ std::vector<double> Communicator::scatter_from_root(
       throw RuntimeFailure("mpi: a scatter needs one slice per process");
     }
     for (const auto& slice : per_rank) {
-      offsets.push_back(static_cast<int>(flat.size()));
-      counts.push_back(static_cast<int>(slice.size()));
+      offsets.push_back(mpi_count(flat.size(), "a scatter"));
+      counts.push_back(mpi_count(slice.size(), "a scatter"));
       flat.insert(flat.end(), slice.begin(), slice.end());
     }
   }
@@ -185,7 +199,8 @@ Communicator Communicator::split(int colour) const {
 
 void Communicator::broadcast_from_root(std::span<double> values) const {
   if (!handle_) return;
-  check_mpi(MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_DOUBLE, 0, handle_->comm),
+  check_mpi(MPI_Bcast(values.data(), mpi_count(values.size(), "a broadcast"), MPI_DOUBLE, 0,
+                      handle_->comm),
             "MPI_Bcast");
 }
 

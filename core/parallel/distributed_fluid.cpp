@@ -85,7 +85,8 @@ DistributedFluid::DistributedFluid(Communicator communicator, lattice::LatticeGr
                                decomposition_.z_end(communicator_.rank()) -
                                    decomposition_.z_begin(communicator_.rank()) + 2 * kHaloPlanes),
           distributable(parameters)),
-      scheme_(chosen_scheme(scheme, parameters)) {
+      scheme_(chosen_scheme(scheme, parameters)),
+      walls_(is_wall) {
   const lattice::LatticeGrid& grid = local_.grid();
   for (int z = 0; z < grid.nz() && is_wall; ++z) {
     const int global_z = lattice::LatticeGrid::wrap(z_begin() - kHaloPlanes + z, global_.nz());
@@ -154,14 +155,13 @@ lattice::VectorField& DistributedFluid::force_density() {
   return local_.force_density();
 }
 
-std::vector<double> DistributedFluid::pack_planes(int local_z, int planes) const {
+std::vector<double> DistributedFluid::pack_planes(int local_z, int planes, bool force) const {
   const lattice::LatticeGrid& grid = local_.grid();
   const std::size_t first = grid.index(0, 0, local_z);
   const std::size_t count = static_cast<std::size_t>(planes) * grid.nx() * grid.ny();
   std::vector<double> values = local_.stored_populations(first, count);
-  if (force_field_) {
-    const auto& force = local_.force_density();
-    for (const auto& component : force) {
+  if (force) {
+    for (const auto& component : local_.force_density()) {
       values.insert(values.end(), component.begin() + static_cast<std::ptrdiff_t>(first),
                     component.begin() + static_cast<std::ptrdiff_t>(first + count));
     }
@@ -169,19 +169,20 @@ std::vector<double> DistributedFluid::pack_planes(int local_z, int planes) const
   return values;
 }
 
-void DistributedFluid::unpack_planes(int local_z, int planes, const std::vector<double>& values) {
+void DistributedFluid::unpack_planes(int local_z, int planes, const std::vector<double>& values,
+                                     bool force) {
   const lattice::LatticeGrid& grid = local_.grid();
   const std::size_t first = grid.index(0, 0, local_z);
   const std::size_t count = static_cast<std::size_t>(planes) * grid.nx() * grid.ny();
   const std::size_t populations = lattice::kDirections * count;
   local_.replace_stored_populations(first, count,
                                     std::span<const double>(values).first(populations));
-  if (force_field_) {
-    auto& force = local_.force_density();
+  if (force) {
+    auto& density = local_.force_density();
     for (std::size_t axis = 0; axis < 3; ++axis) {
       const auto begin = values.begin() + static_cast<std::ptrdiff_t>(populations + axis * count);
       std::copy(begin, begin + static_cast<std::ptrdiff_t>(count),
-                force[axis].begin() + static_cast<std::ptrdiff_t>(first));
+                density[axis].begin() + static_cast<std::ptrdiff_t>(first));
     }
   }
 }
@@ -192,16 +193,17 @@ void DistributedFluid::exchange_full_state() {
   const int upper = (communicator_.rank() + 1) % ranks;
   const int lower = (communicator_.rank() + ranks - 1) % ranks;
   const int slab = z_end() - z_begin();
+  const bool force = communicator_.any(force_field_);
   // Upward: the slab's top planes become the upper neighbour's lower ghost planes.
-  const std::vector<double> top = pack_planes(slab, kHaloPlanes);
+  const std::vector<double> top = pack_planes(slab, kHaloPlanes, force);
   std::vector<double> lower_ghost(top.size());
   communicator_.send_receive(top, upper, lower_ghost, lower, kUpwardTag);
   // Downward: the slab's bottom planes become the lower neighbour's upper ghost planes.
-  const std::vector<double> bottom = pack_planes(kHaloPlanes, kHaloPlanes);
+  const std::vector<double> bottom = pack_planes(kHaloPlanes, kHaloPlanes, force);
   std::vector<double> upper_ghost(bottom.size());
   communicator_.send_receive(bottom, lower, upper_ghost, upper, kDownwardTag);
-  unpack_planes(0, kHaloPlanes, lower_ghost);
-  unpack_planes(slab + kHaloPlanes, kHaloPlanes, upper_ghost);
+  unpack_planes(0, kHaloPlanes, lower_ghost, force);
+  unpack_planes(slab + kHaloPlanes, kHaloPlanes, upper_ghost, force);
   ++counters_.exchanges;
   counters_.messages += 2;
   counters_.bytes += (top.size() + bottom.size()) * sizeof(double);
@@ -441,15 +443,22 @@ void DistributedFluid::read_checkpoint(const std::filesystem::path& file,
                                        std::string_view config_fingerprint) {
   StateArchive archive(file.string());
   std::string problem;
+  bool bad_input = false;
   if (communicator_.is_root()) {
     try {
       archive = io::read_state_archive(file, kFluidCheckpointVersion, config_fingerprint);
     } catch (const InputError& error) {
       problem = error.what();
+      bad_input = true;
+    } catch (const std::exception& error) {  // any failure: every process must hear of it
+      problem = file.string() + ": " + error.what();
     }
   }
   if (communicator_.any(!problem.empty())) {
-    throw InputError(problem.empty() ? file.string() + ": not readable (see rank 0)" : problem);
+    const std::string message =
+        problem.empty() ? file.string() + ": not read (see rank 0)" : problem;
+    if (communicator_.any(bad_input)) throw InputError(message);
+    throw RuntimeFailure(message);
   }
   restore_state(archive);
   if (communicator_.is_root()) {

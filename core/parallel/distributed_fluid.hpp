@@ -25,9 +25,11 @@
 //
 // The lattice is periodic in z, as FluidSolver's is: the lowest slab's lower neighbour is the
 // highest slab. Checkpoints take the undivided solver's form (save_state), so they do not depend on
-// the process count. Not distributed yet: a viscosity contrast, inlets and outlets, interpolated
-// wall links, cells (the immersed boundary). Densities and velocities are the slab's own; the
-// ghost planes' are not kept.
+// the process count; they pass through rank 0 whole (MPI counts are ints: at most 2^31 - 1
+// values, some 113 million nodes, refused beyond). Not distributed yet: a viscosity contrast,
+// inlets and outlets, moving walls, interpolated wall links. Densities and velocities are the
+// slab's own; the ghost planes' are not kept (distributed_ibm.hpp exchanges the velocities it
+// needs).
 #pragma once
 
 #include "common/state_archive.hpp"
@@ -62,7 +64,7 @@ using WallPredicate = std::function<bool(int x, int y, int z)>;
 
 // What the halo exchanges of this process cost so far.
 struct HaloCounters {
-  std::size_t exchanges = 0;  // one per step
+  std::size_t exchanges = 0;  // full state: one per step; crossing: two per streaming step
   std::size_t messages = 0;   // sent by this process
   std::size_t bytes = 0;      // sent by this process
   double seconds = 0.0;       // packing, sending, receiving and unpacking
@@ -88,8 +90,11 @@ class DistributedFluid {
   // The local solver: the slab with its ghost planes (global plane z at local z - z_begin() +
   // kHaloPlanes). Read densities and velocities of the slab's own planes; the ghost planes'
   // values are the neighbours' business.
-  lattice::FluidSolver& local() { return local_; }
+  // Read-only: geometry, forces and state go through this class, so that ghost planes and halo
+  // masks stay consistent with the slab (walls only through the constructor's predicate).
   const lattice::FluidSolver& local() const { return local_; }
+  // The walls the fluid was built with (empty: none), for the stencils of its immersed boundary.
+  const WallPredicate& walls() const { return walls_; }
   // The local index of global node (x, y, z), for z in [z_begin() - kHaloPlanes, z_end() +
   // kHaloPlanes) (not wrapped).
   std::size_t local_node(int x, int y, int z) const;
@@ -149,8 +154,9 @@ class DistributedFluid {
   // The reverse, ghost planes included (wrapped around the lattice): rank 0's global field cut
   // into every process's local field.
   std::vector<double> scatter_field(std::span<const double> global, int components) const;
-  std::vector<double> pack_planes(int local_z, int planes) const;
-  void unpack_planes(int local_z, int planes, const std::vector<double>& values);
+  // The populations of `planes` planes from local_z, and their force density when `force`.
+  std::vector<double> pack_planes(int local_z, int planes, bool force) const;
+  void unpack_planes(int local_z, int planes, const std::vector<double>& values, bool force);
   void exchange_full_state();
   // Sends slots `up_slots` of local plane `up_from` to the upper neighbour's plane `up_to` and
   // slots `down_slots` of `down_from` to the lower neighbour's `down_to`. With masks (one entry
@@ -173,6 +179,9 @@ class DistributedFluid {
   HaloScheme scheme_;
   std::vector<char> bottom_from_ghost_;  // streamed_from_ghost of the lowest plane, up slots
   std::vector<char> top_from_ghost_;     // of the highest plane, down slots
+  WallPredicate walls_;
+  // Whether force_density() was handed out here. The full-state halo sends the force density once
+  // any process has (the undivided solver's one force field is on once anyone adds to it).
   bool force_field_ = false;
   HaloCounters counters_;
 };

@@ -25,9 +25,9 @@ const ibm::DeltaKernel& narrow_enough(const ibm::DeltaKernel& kernel) {
 }  // namespace
 
 DistributedImmersedBoundary::DistributedImmersedBoundary(const DistributedFluid& fluid,
-                                                         std::string_view kernel,
-                                                         const WallPredicate& is_wall)
+                                                         std::string_view kernel)
     : fluid_(fluid), kernel_(narrow_enough(ibm::find_delta_kernel(kernel))) {
+  const WallPredicate& is_wall = fluid.walls();
   const lattice::LatticeGrid& global = fluid.global_grid();
   global_grid_ = {global.nx(), global.ny(), global.nz(), true, true, true};
   solid_.assign(global.node_count(), 0);

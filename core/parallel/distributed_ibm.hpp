@@ -26,11 +26,10 @@ namespace rbcsim::parallel {
 
 class DistributedImmersedBoundary {
  public:
-  // `kernel`: a name of ibm::delta_kernels(); `is_wall` as the fluid's (the stencils drop solid
-  // nodes). Every axis is periodic, as the fluid's. Throws rbcsim::InputError for an unknown
-  // kernel, std::logic_error for one wider than the ghost planes.
-  DistributedImmersedBoundary(const DistributedFluid& fluid, std::string_view kernel,
-                              const WallPredicate& is_wall = {});
+  // `kernel`: a name of ibm::delta_kernels(). The stencils drop the fluid's wall nodes; every
+  // axis is periodic, as the fluid's. Throws rbcsim::InputError for an unknown kernel,
+  // std::logic_error for one wider than the ghost planes.
+  DistributedImmersedBoundary(const DistributedFluid& fluid, std::string_view kernel);
 
   // The stencils of every point (lattice coordinates of the whole lattice, not wrapped), and which
   // points this process interpolates. Throws RuntimeFailure as InterpolationStencil::build.

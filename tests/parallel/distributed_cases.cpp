@@ -221,7 +221,7 @@ CoupledState run_coupled_distributed(std::string_view kernel, std::size_t steps,
                                      const Communicator& communicator) {
   const DistributedCase flow = coupled_channel();
   auto fluid = make_distributed(flow, communicator);
-  DistributedImmersedBoundary boundary(*fluid, kernel, channel_wall);
+  DistributedImmersedBoundary boundary(*fluid, kernel);
   const std::vector<Vec3> anchors = starting_points();
   std::vector<Vec3> points = anchors;
   for (std::size_t step = 0; step < steps; ++step) {
