@@ -18,6 +18,17 @@ namespace {
 
 bool channel_wall(int /*x*/, int y, int /*z*/) { return y == 0 || y == kCaseNy - 1; }
 
+// The channel with a block across it that straddles block and slab faces (z 3-6: the faces at 4
+// and 6 of blocks of 2 planes), so that links along z and diagonal ones meet walls in ghost planes.
+bool obstructed_channel_wall(int x, int y, int z) {
+  return channel_wall(x, y, z) || (x >= 1 && x <= 3 && y >= 2 && y <= 4 && z >= 3 && z <= 6);
+}
+
+WallPredicate case_walls(const DistributedCase& flow) {
+  if (!flow.walls) return {};
+  return flow.obstacle ? WallPredicate(obstructed_channel_wall) : WallPredicate(channel_wall);
+}
+
 // A start that varies along every axis, z above all (a flow uniform in z would hide a halo that
 // mixes up planes).
 DistributedFluid::NodeState initial_state(int x, int y, int z) {
@@ -47,6 +58,9 @@ std::vector<DistributedCase> distributed_cases() {
   reference.kernel = "reference";
   cases.push_back({"reference_channel", reference, true, false});
   cases.push_back({"aa_force_field", channel, true, true});
+  DistributedCase obstructed{"aa_obstacle_across_slabs", channel, true, true};
+  obstructed.obstacle = true;
+  cases.push_back(obstructed);
   lattice::FluidParameters sheared;
   sheared.lees_edwards_velocity = 0.02;
   cases.push_back({"aa_lees_edwards", sheared, false, false});
@@ -70,7 +84,7 @@ std::unique_ptr<lattice::FluidSolver> make_undivided(const DistributedCase& flow
   for (int z = 0; z < kCaseNz; ++z) {
     for (int y = 0; y < kCaseNy; ++y) {
       for (int x = 0; x < kCaseNx; ++x) {
-        if (flow.walls && channel_wall(x, y, z)) solver->set_wall(grid.index(x, y, z));
+        if (flow.walls && case_walls(flow)(x, y, z)) solver->set_wall(grid.index(x, y, z));
       }
     }
   }
@@ -114,7 +128,7 @@ void advance_undivided(const DistributedCase& flow, lattice::FluidSolver& solver
 
 std::unique_ptr<DistributedFluid> make_distributed(const DistributedCase& flow,
                                                    const Communicator& communicator) {
-  const WallPredicate walls = flow.walls ? WallPredicate(channel_wall) : WallPredicate();
+  const WallPredicate walls = case_walls(flow);
   auto fluid = std::make_unique<DistributedFluid>(communicator,
                                                   lattice::LatticeGrid(kCaseNx, kCaseNy, kCaseNz),
                                                   2, flow.parameters, walls, flow.scheme);

@@ -21,6 +21,7 @@ struct DistributedCase {
   bool walls = true;         // walls at y = 0 and y = ny - 1 (a channel)
   bool force_field = false;  // a force density that varies in space and time, added every step
   HaloScheme scheme = HaloScheme::automatic;
+  bool obstacle = false;  // with walls: also a block across the channel, straddling slab faces
 };
 
 // GoogleTest prints a case by its name.

@@ -104,6 +104,40 @@ TEST(ProcessesCheckpoint, WrittenOnAllResumesOnFewerProcessesBitForBit) {
   if (world.is_root()) std::filesystem::remove(file);
 }
 
+// Written on rank 0 alone, resumed on every process of the run.
+TEST(ProcessesCheckpoint, WrittenOnOneResumesOnAllBitForBit) {
+  constexpr std::size_t kBefore = 13;
+  constexpr std::size_t kAfter = 12;
+  testing::DistributedCase flow;
+  for (const auto& candidate : testing::distributed_cases()) {
+    if (candidate.name == "aa_obstacle_across_slabs") flow = candidate;
+  }
+  const Communicator world = Communicator::world();
+  double root_pid = static_cast<double>(::getpid());
+  world.broadcast_from_root(std::span<double>(&root_pid, 1));
+  const auto file =
+      std::filesystem::temp_directory_path() /
+      ("rbcsim_mpi_checkpoint_one_" + std::to_string(static_cast<long>(root_pid)) + ".bin");
+  std::vector<double> expected;
+  if (world.is_root()) {
+    auto alone = testing::make_distributed(flow, Communicator::self());
+    testing::advance_distributed(flow, *alone, kBefore);
+    alone->write_checkpoint(file, "mpi test");
+    auto uninterrupted = testing::make_undivided(flow);
+    testing::advance_undivided(flow, *uninterrupted, kBefore + kAfter);
+    expected = uninterrupted->stored_populations(0, uninterrupted->grid().node_count());
+  }
+  world.barrier();
+  auto resumed = testing::make_distributed(flow, world);
+  resumed->read_checkpoint(file, "mpi test");
+  testing::advance_distributed(flow, *resumed, kAfter);
+  const auto state = resumed->gather_stored_populations();
+  if (world.is_root()) {
+    EXPECT_EQ(state, expected) << "written on one, resumed on " << world.size();
+    std::filesystem::remove(file);
+  }
+}
+
 }  // namespace
 }  // namespace rbcsim::parallel
 
