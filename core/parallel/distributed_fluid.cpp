@@ -193,7 +193,9 @@ void DistributedFluid::exchange_full_state() {
   const int upper = (communicator_.rank() + 1) % ranks;
   const int lower = (communicator_.rank() + ranks - 1) % ranks;
   const int slab = z_end() - z_begin();
-  const bool force = communicator_.any(force_field_);
+  // Once on, the force field stays on everywhere: the agreement is needed only until then.
+  if (!force_in_halo_) force_in_halo_ = communicator_.any(force_field_);
+  const bool force = force_in_halo_;
   // Upward: the slab's top planes become the upper neighbour's lower ghost planes.
   const std::vector<double> top = pack_planes(slab, kHaloPlanes, force);
   std::vector<double> lower_ghost(top.size());

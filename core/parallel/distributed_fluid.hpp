@@ -183,6 +183,7 @@ class DistributedFluid {
   // Whether force_density() was handed out here. The full-state halo sends the force density once
   // any process has (the undivided solver's one force field is on once anyone adds to it).
   bool force_field_ = false;
+  bool force_in_halo_ = false;  // some process has applied a force: the halo carries it from now
   HaloCounters counters_;
 };
 

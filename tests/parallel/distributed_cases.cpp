@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <memory>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "ibm/delta_kernels.hpp"
 #include "ibm/grid_view.hpp"
@@ -76,6 +78,13 @@ std::vector<DistributedCase> distributed_cases() {
     cases.push_back(full);
   }
   return cases;
+}
+
+DistributedCase case_named(std::string_view name) {
+  for (const auto& flow : distributed_cases()) {
+    if (flow.name == name) return flow;
+  }
+  throw std::logic_error("no distributed case named " + std::string(name));
 }
 
 std::unique_ptr<lattice::FluidSolver> make_undivided(const DistributedCase& flow) {

@@ -37,6 +37,9 @@ inline constexpr int kCaseNz = 12;
 // An odd count: the AA kernel ends in its swapped layout.
 inline constexpr std::size_t kCaseSteps = 25;
 
+// The case of that name; throws std::logic_error if there is none.
+DistributedCase case_named(std::string_view name);
+
 // The case's lattice, walls and start, undivided or on the distributed lattice (blocks of 2
 // planes), and steps of it (the force field, if any, added before each).
 std::unique_ptr<lattice::FluidSolver> make_undivided(const DistributedCase& flow);

@@ -20,12 +20,7 @@ namespace {
 constexpr std::size_t kBefore = 13;
 constexpr std::size_t kAfter = 12;
 
-testing::DistributedCase channel_with_forces() {
-  for (const auto& flow : testing::distributed_cases()) {
-    if (flow.name == "aa_force_field") return flow;
-  }
-  throw std::logic_error("no aa_force_field case");
-}
+testing::DistributedCase channel_with_forces() { return testing::case_named("aa_force_field"); }
 
 TEST(DistributedCheckpoint, IsTheUndividedSolversCheckpoint) {
   const auto flow = channel_with_forces();

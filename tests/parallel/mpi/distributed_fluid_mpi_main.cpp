@@ -58,21 +58,22 @@ INSTANTIATE_TEST_SUITE_P(DistributedImmersedBoundary, ProcessesCoupled,
                          ::testing::Values("phi2", "phi3", "phi4"),
                          [](const auto& parameter) { return parameter.param; });
 
+// A checkpoint file every process names alike: rank 0's process id in the temporary directory.
+std::filesystem::path checkpoint_file(const Communicator& world, const std::string& prefix) {
+  double root_pid = static_cast<double>(::getpid());
+  world.broadcast_from_root(std::span<double>(&root_pid, 1));
+  return std::filesystem::temp_directory_path() /
+         (prefix + std::to_string(static_cast<long>(root_pid)) + ".bin");
+}
+
 // Written on every process of the run, resumed on the first half of them (4 -> 2, 3 -> 2, 2 -> 1)
 // and on rank 0 alone: the uninterrupted undivided run's state, bit for bit.
 TEST(ProcessesCheckpoint, WrittenOnAllResumesOnFewerProcessesBitForBit) {
   constexpr std::size_t kBefore = 13;
   constexpr std::size_t kAfter = 12;
-  testing::DistributedCase flow;
-  for (const auto& candidate : testing::distributed_cases()) {
-    if (candidate.name == "aa_force_field") flow = candidate;
-  }
+  const testing::DistributedCase flow = testing::case_named("aa_force_field");
   const Communicator world = Communicator::world();
-  double root_pid = static_cast<double>(::getpid());
-  world.broadcast_from_root(std::span<double>(&root_pid, 1));
-  const auto file =
-      std::filesystem::temp_directory_path() /
-      ("rbcsim_mpi_checkpoint_" + std::to_string(static_cast<long>(root_pid)) + ".bin");
+  const auto file = checkpoint_file(world, "rbcsim_mpi_checkpoint_");
   auto fluid = testing::make_distributed(flow, world);
   testing::advance_distributed(flow, *fluid, kBefore);
   fluid->write_checkpoint(file, "mpi test");
@@ -108,16 +109,9 @@ TEST(ProcessesCheckpoint, WrittenOnAllResumesOnFewerProcessesBitForBit) {
 TEST(ProcessesCheckpoint, WrittenOnOneResumesOnAllBitForBit) {
   constexpr std::size_t kBefore = 13;
   constexpr std::size_t kAfter = 12;
-  testing::DistributedCase flow;
-  for (const auto& candidate : testing::distributed_cases()) {
-    if (candidate.name == "aa_obstacle_across_slabs") flow = candidate;
-  }
+  const testing::DistributedCase flow = testing::case_named("aa_obstacle_across_slabs");
   const Communicator world = Communicator::world();
-  double root_pid = static_cast<double>(::getpid());
-  world.broadcast_from_root(std::span<double>(&root_pid, 1));
-  const auto file =
-      std::filesystem::temp_directory_path() /
-      ("rbcsim_mpi_checkpoint_one_" + std::to_string(static_cast<long>(root_pid)) + ".bin");
+  const auto file = checkpoint_file(world, "rbcsim_mpi_checkpoint_one_");
   std::vector<double> expected;
   if (world.is_root()) {
     auto alone = testing::make_distributed(flow, Communicator::self());
