@@ -62,6 +62,10 @@ class BoundaryMap {
 
   std::array<double, 3> wall_velocity(std::size_t node) const;
   double outlet_density(std::size_t node) const;
+  // What is set beyond resting half-way walls, for a solver that runs only those (core/parallel).
+  bool has_moving_walls() const { return !wall_velocity_.empty(); }
+  bool has_pressure_outlets() const { return !outlet_density_.empty(); }
+  bool has_wall_fractions() const { return !wall_fraction_.empty(); }
 
   // Where the wall cuts the link from fluid node `link.node` along c_direction (WallLink). Links
   // never set are cut half-way, q = 1/2. The caller checks the link (FluidSolver::set_wall_links).

@@ -25,12 +25,12 @@ BlockDecomposition::BlockDecomposition(int nz, int block_planes, int ranks,
   block_z_begin_.push_back(nz);
   const int blocks = block_count();
   if (blocks < ranks) {
-    throw InputError("block decomposition",
-                     std::to_string(nz) + " planes in blocks of " + std::to_string(block_planes) +
-                         " make " + std::to_string(blocks) + " block(s) for " +
-                         std::to_string(ranks) +
-                         " processes; every process needs one: use thinner blocks or fewer "
-                         "processes");
+    throw InputError(
+        "block decomposition",
+        std::to_string(nz) + " planes in blocks of " + std::to_string(block_planes) + " make " +
+            std::to_string(blocks) + " block(s) for " + std::to_string(ranks) +
+            " processes; every process needs one: use thinner blocks (lattice.block_planes, "
+            "bench --block-planes; at least 2) or fewer processes");
   }
   std::vector<std::int64_t> weights(block_weights.begin(), block_weights.end());
   if (weights.empty()) weights.assign(blocks, 1);

@@ -5,9 +5,11 @@
 #include "io/state_archive_file.hpp"
 #include "lattice/d3q19.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -72,7 +74,35 @@ lattice::FluidParameters distributable(lattice::FluidParameters parameters) {
   return parameters;
 }
 
+// The resting walls of an undivided solver, refusing every other boundary; none without walls.
+WallPredicate resting_walls_of(const lattice::FluidSolver& whole) {
+  const lattice::BoundaryMap& boundaries = whole.boundaries();
+  const char* other = boundaries.has_moving_walls()       ? "moving walls or velocity inlets"
+                      : boundaries.has_pressure_outlets() ? "pressure outlets"
+                      : boundaries.has_wall_fractions()   ? "curved wall links"
+                                                          : nullptr;
+  if (other != nullptr) {
+    throw InputError("processes", std::string(other) +
+                                      " do not run on the distributed lattice yet: run on one "
+                                      "process (without mpirun)");
+  }
+  const auto& kinds = whole.solid_mask();
+  if (std::ranges::none_of(kinds, [](std::uint8_t kind) { return kind != 0; })) return {};
+  auto mask = std::make_shared<const std::vector<std::uint8_t>>(kinds);
+  const lattice::LatticeGrid grid = whole.grid();
+  return [mask, grid](int x, int y, int z) { return (*mask)[grid.index(x, y, z)] != 0; };
+}
+
 }  // namespace
+
+DistributedFluid::DistributedFluid(Communicator communicator, const lattice::FluidSolver& whole,
+                                   int block_planes)
+    : DistributedFluid(std::move(communicator), whole.grid(), block_planes, whole.parameters(),
+                       resting_walls_of(whole)) {
+  StateArchive state("the undivided fluid");
+  whole.save_state(state);
+  restore_state(state);
+}
 
 DistributedFluid::DistributedFluid(Communicator communicator, lattice::LatticeGrid global,
                                    int block_planes, lattice::FluidParameters parameters,

@@ -13,8 +13,97 @@ namespace {
 
 constexpr int kVelocityUpTag = 3;
 constexpr int kVelocityDownTag = 4;
+// What interpolate_on_slabs sends per point: source, point, velocity.
+constexpr std::size_t kValuesPerPoint = 5;
 
-const ibm::DeltaKernel& narrow_enough(const ibm::DeltaKernel& kernel) {
+std::size_t plane_size_of(const lattice::LatticeGrid& grid) {
+  return static_cast<std::size_t>(grid.nx()) * grid.ny();
+}
+
+// The local node of global node `node` if this process holds its plane, else -1.
+std::int64_t own_local_node(const DistributedFluid& fluid, std::size_t node) {
+  const std::size_t plane_size = plane_size_of(fluid.global_grid());
+  const auto z = static_cast<int>(node / plane_size);
+  if (z < fluid.z_begin() || z >= fluid.z_end()) return -1;
+  return static_cast<std::int64_t>(
+      node % plane_size + static_cast<std::size_t>(z - fluid.z_begin() + kHaloPlanes) * plane_size);
+}
+
+// Whether this process interpolates the point at `position_lu`: it holds the point's plane.
+bool interpolates_here(const DistributedFluid& fluid, const Vec3& position_lu) {
+  const int plane = lattice::LatticeGrid::wrap(static_cast<int>(std::floor(position_lu.z())),
+                                               fluid.global_grid().nz());
+  return plane >= fluid.z_begin() && plane < fluid.z_end();
+}
+
+// The velocity at any node within the ghost reach of this slab: the slab's own, or (collective,
+// at construction) the neighbours' boundary planes, exchanged into a copy of the ghost planes.
+class SlabVelocities {
+ public:
+  explicit SlabVelocities(const DistributedFluid& fluid)
+      : fluid_(fluid),
+        velocity_(fluid.local().velocity()),
+        plane_size_(plane_size_of(fluid.global_grid())),
+        slab_(fluid.z_end() - fluid.z_begin()) {
+    const Communicator& communicator = fluid.communicator();
+    const int ranks = communicator.size();
+    const int upper = (communicator.rank() + 1) % ranks;
+    const int lower = (communicator.rank() + ranks - 1) % ranks;
+    const std::vector<double> top = pack(slab_);  // the slab's highest planes
+    lower_ghost_.resize(top.size());
+    communicator.send_receive(top, upper, lower_ghost_, lower, kVelocityUpTag);
+    const std::vector<double> bottom = pack(kHaloPlanes);
+    upper_ghost_.resize(bottom.size());
+    communicator.send_receive(bottom, lower, upper_ghost_, upper, kVelocityDownTag);
+  }
+
+  Vec3 at(std::size_t node) const {
+    const int z = static_cast<int>(node / plane_size_);
+    const std::size_t in_plane = node % plane_size_;
+    // The node's plane relative to the slab, the periodic image nearest to it.
+    int offset = z - fluid_.z_begin();
+    const int nz = fluid_.global_grid().nz();
+    if (offset < -kHaloPlanes) offset += nz;
+    if (offset >= slab_ + kHaloPlanes) offset -= nz;
+    if (offset >= 0 && offset < slab_) {
+      const std::size_t local = in_plane + (offset + kHaloPlanes) * plane_size_;
+      return Vec3(velocity_[0][local], velocity_[1][local], velocity_[2][local]);
+    }
+    const bool below = offset < 0;
+    const std::vector<double>& ghost = below ? lower_ghost_ : upper_ghost_;
+    const int ghost_plane = below ? offset + kHaloPlanes : offset - slab_;
+    if (ghost_plane < 0 || ghost_plane >= kHaloPlanes) {
+      throw std::logic_error("parallel: a stencil node beyond the ghost planes");
+    }
+    const std::size_t at = in_plane + ghost_plane * plane_size_;
+    const std::size_t component = kHaloPlanes * plane_size_;
+    return Vec3(ghost[at], ghost[component + at], ghost[2 * component + at]);
+  }
+
+ private:
+  // kHaloPlanes planes of velocity from local plane first_local_z, each component after the other.
+  std::vector<double> pack(int first_local_z) const {
+    std::vector<double> values;
+    for (int axis = 0; axis < 3; ++axis) {
+      const auto begin =
+          velocity_[axis].begin() + static_cast<std::ptrdiff_t>(first_local_z * plane_size_);
+      values.insert(values.end(), begin,
+                    begin + static_cast<std::ptrdiff_t>(kHaloPlanes * plane_size_));
+    }
+    return values;
+  }
+
+  const DistributedFluid& fluid_;
+  const lattice::VectorField& velocity_;
+  std::size_t plane_size_;
+  int slab_;
+  std::vector<double> lower_ghost_;  // the ghost planes below the slab, x, y, z one after other
+  std::vector<double> upper_ghost_;
+};
+
+}  // namespace
+
+const ibm::DeltaKernel& require_within_ghost_planes(const ibm::DeltaKernel& kernel) {
   if (kernel.support_width > 2 * kHaloPlanes) {
     throw std::logic_error("parallel: the IBM kernel " + std::string(kernel.name) +
                            " reaches beyond the " + std::to_string(kHaloPlanes) + " ghost planes");
@@ -22,11 +111,97 @@ const ibm::DeltaKernel& narrow_enough(const ibm::DeltaKernel& kernel) {
   return kernel;
 }
 
-}  // namespace
+void spread_onto_slab(std::span<const ibm::SpreadSource> sources, DistributedFluid& fluid) {
+  for (const ibm::SpreadSource& source : sources) {
+    if (source.point_forces_lu.size() != source.stencil->point_count()) {
+      throw std::invalid_argument("parallel: " + std::to_string(source.point_forces_lu.size()) +
+                                  " forces for " + std::to_string(source.stencil->point_count()) +
+                                  " points");
+    }
+  }
+  auto& force = fluid.force_density();
+  double* const fx = force[0].data();
+  double* const fy = force[1].data();
+  double* const fz = force[2].data();
+  // Source by source, point by point, slot by slot, as ibm::spread_forces adds to each node.
+  for (const ibm::SpreadSource& source : sources) {
+    const ibm::InterpolationStencil& stencil = *source.stencil;
+    for (std::size_t point = 0; point < stencil.point_count(); ++point) {
+      const auto nodes = stencil.nodes(point);
+      const auto weights = stencil.weights(point);
+      const Vec3& f = source.point_forces_lu[point];
+      for (std::size_t slot = 0; slot < nodes.size(); ++slot) {
+        const std::int64_t local = own_local_node(fluid, nodes[slot]);
+        if (local < 0) continue;
+        fx[local] += weights[slot] * f.x();
+        fy[local] += weights[slot] * f.y();
+        fz[local] += weights[slot] * f.z();
+      }
+    }
+  }
+}
+
+std::vector<std::vector<Vec3>> interpolate_on_slabs(std::span<const InterpolationSource> sources,
+                                                    const DistributedFluid& fluid) {
+  const SlabVelocities velocity(fluid);
+  std::vector<std::size_t> first_of_source(sources.size() + 1, 0);
+  std::vector<double> mine;
+  for (std::size_t s = 0; s < sources.size(); ++s) {
+    const ibm::InterpolationStencil& stencil = *sources[s].stencil;
+    if (sources[s].positions_lu.size() != stencil.point_count()) {
+      throw std::invalid_argument("parallel: " + std::to_string(sources[s].positions_lu.size()) +
+                                  " positions for " + std::to_string(stencil.point_count()) +
+                                  " points");
+    }
+    first_of_source[s + 1] = first_of_source[s] + stencil.point_count();
+    for (std::size_t point = 0; point < stencil.point_count(); ++point) {
+      if (!interpolates_here(fluid, sources[s].positions_lu[point])) continue;
+      const auto nodes = stencil.nodes(point);
+      const auto weights = stencil.weights(point);
+      Vec3 u = Vec3::Zero();
+      for (std::size_t slot = 0; slot < nodes.size(); ++slot) {
+        u += weights[slot] * velocity.at(nodes[slot]);
+      }
+      mine.insert(mine.end(),
+                  {static_cast<double>(s), static_cast<double>(point), u.x(), u.y(), u.z()});
+    }
+  }
+  // Copies, no sums: rank 0 puts every point's velocity in place and hands the lists to all.
+  const Communicator& communicator = fluid.communicator();
+  const std::vector<double> gathered = communicator.gather_to_root(mine);
+  const std::size_t total_points = first_of_source.back();
+  std::vector<double> flat(3 * total_points, 0.0);
+  std::string problem;
+  if (communicator.is_root()) {
+    if (gathered.size() != kValuesPerPoint * total_points) {
+      problem = "parallel: " + std::to_string(gathered.size() / kValuesPerPoint) + " of " +
+                std::to_string(total_points) + " points interpolated";
+    }
+    for (std::size_t k = 0; k + kValuesPerPoint <= gathered.size(); k += kValuesPerPoint) {
+      const std::size_t at = first_of_source[static_cast<std::size_t>(gathered[k])] +
+                             static_cast<std::size_t>(gathered[k + 1]);
+      for (std::size_t axis = 0; axis < 3; ++axis) flat[3 * at + axis] = gathered[k + 2 + axis];
+    }
+  }
+  if (communicator.any(!problem.empty())) {
+    throw RuntimeFailure(problem.empty() ? "parallel: a point was not interpolated (see rank 0)"
+                                         : problem);
+  }
+  communicator.broadcast_from_root(flat);
+  std::vector<std::vector<Vec3>> velocities(sources.size());
+  for (std::size_t s = 0; s < sources.size(); ++s) {
+    auto& of_source = velocities[s];
+    of_source.reserve(first_of_source[s + 1] - first_of_source[s]);
+    for (std::size_t at = first_of_source[s]; at < first_of_source[s + 1]; ++at) {
+      of_source.emplace_back(flat[3 * at], flat[3 * at + 1], flat[3 * at + 2]);
+    }
+  }
+  return velocities;
+}
 
 DistributedImmersedBoundary::DistributedImmersedBoundary(const DistributedFluid& fluid,
                                                          std::string_view kernel)
-    : fluid_(fluid), kernel_(narrow_enough(ibm::find_delta_kernel(kernel))) {
+    : fluid_(fluid), kernel_(require_within_ghost_planes(ibm::find_delta_kernel(kernel))) {
   const WallPredicate& is_wall = fluid.walls();
   const lattice::LatticeGrid& global = fluid.global_grid();
   global_grid_ = {global.nx(), global.ny(), global.nz(), true, true, true};
@@ -43,135 +218,22 @@ DistributedImmersedBoundary::DistributedImmersedBoundary(const DistributedFluid&
 
 void DistributedImmersedBoundary::build(std::span<const Vec3> positions_lu) {
   stencil_.build(kernel_, global_grid_, positions_lu, solid_.data());
-  owned_points_.clear();
-  const int nz = global_grid_.nz;
-  for (std::size_t point = 0; point < positions_lu.size(); ++point) {
-    const int plane =
-        lattice::LatticeGrid::wrap(static_cast<int>(std::floor(positions_lu[point].z())), nz);
-    if (plane >= fluid_.z_begin() && plane < fluid_.z_end()) owned_points_.push_back(point);
+  positions_lu_.assign(positions_lu.begin(), positions_lu.end());
+  owned_point_count_ = 0;
+  for (const Vec3& position : positions_lu_) {
+    if (interpolates_here(fluid_, position)) ++owned_point_count_;
   }
-}
-
-std::int64_t DistributedImmersedBoundary::own_local_node(std::size_t node) const {
-  const std::size_t plane_size = static_cast<std::size_t>(global_grid_.nx) * global_grid_.ny;
-  const auto z = static_cast<int>(node / plane_size);
-  if (z < fluid_.z_begin() || z >= fluid_.z_end()) return -1;
-  return static_cast<std::int64_t>(node % plane_size +
-                                   static_cast<std::size_t>(z - fluid_.z_begin() + kHaloPlanes) *
-                                       plane_size);
 }
 
 void DistributedImmersedBoundary::spread(std::span<const Vec3> forces_lu,
                                          DistributedFluid& fluid) const {
-  if (forces_lu.size() != stencil_.point_count()) {
-    throw std::invalid_argument("parallel: " + std::to_string(forces_lu.size()) + " forces for " +
-                                std::to_string(stencil_.point_count()) + " points");
-  }
-  auto& force = fluid.force_density();
-  double* const fx = force[0].data();
-  double* const fy = force[1].data();
-  double* const fz = force[2].data();
-  // Point by point, slot by slot, as ibm::spread_forces adds to each node.
-  for (std::size_t point = 0; point < stencil_.point_count(); ++point) {
-    const auto nodes = stencil_.nodes(point);
-    const auto weights = stencil_.weights(point);
-    const Vec3& f = forces_lu[point];
-    for (std::size_t slot = 0; slot < nodes.size(); ++slot) {
-      const std::int64_t local = own_local_node(nodes[slot]);
-      if (local < 0) continue;
-      fx[local] += weights[slot] * f.x();
-      fy[local] += weights[slot] * f.y();
-      fz[local] += weights[slot] * f.z();
-    }
-  }
+  const ibm::SpreadSource source{&stencil_, forces_lu};
+  spread_onto_slab(std::span(&source, 1), fluid);
 }
 
 std::vector<Vec3> DistributedImmersedBoundary::interpolate(const DistributedFluid& fluid) const {
-  const Communicator& communicator = fluid.communicator();
-  const lattice::LatticeGrid& grid = fluid.local().grid();
-  const lattice::VectorField& velocity = fluid.local().velocity();
-  const std::size_t plane_size = static_cast<std::size_t>(grid.nx()) * grid.ny();
-  const int slab = fluid.z_end() - fluid.z_begin();
-  // The velocities of the neighbours' boundary planes, into a copy of this slab's ghost planes:
-  // [lower ghost planes, upper ghost planes], each component after the other.
-  const auto pack = [&](int first_local_z) {
-    std::vector<double> values;
-    for (int axis = 0; axis < 3; ++axis) {
-      const auto begin =
-          velocity[axis].begin() + static_cast<std::ptrdiff_t>(first_local_z * plane_size);
-      values.insert(values.end(), begin,
-                    begin + static_cast<std::ptrdiff_t>(kHaloPlanes * plane_size));
-    }
-    return values;
-  };
-  const int ranks = communicator.size();
-  const int upper = (communicator.rank() + 1) % ranks;
-  const int lower = (communicator.rank() + ranks - 1) % ranks;
-  const std::vector<double> top = pack(slab);  // the slab's highest planes
-  std::vector<double> lower_ghost(top.size());
-  communicator.send_receive(top, upper, lower_ghost, lower, kVelocityUpTag);
-  const std::vector<double> bottom = pack(kHaloPlanes);
-  std::vector<double> upper_ghost(bottom.size());
-  communicator.send_receive(bottom, lower, upper_ghost, upper, kVelocityDownTag);
-
-  const auto velocity_at = [&](std::size_t node) -> Vec3 {
-    const int z = static_cast<int>(node / plane_size);
-    const std::size_t in_plane = node % plane_size;
-    const int nz = global_grid_.nz;
-    // The node's plane relative to the slab, the periodic image nearest to it.
-    int offset = z - fluid.z_begin();
-    if (offset < -kHaloPlanes) offset += nz;
-    if (offset >= slab + kHaloPlanes) offset -= nz;
-    if (offset >= 0 && offset < slab) {
-      const std::size_t local = in_plane + (offset + kHaloPlanes) * plane_size;
-      return Vec3(velocity[0][local], velocity[1][local], velocity[2][local]);
-    }
-    const bool below = offset < 0;
-    const std::vector<double>& ghost = below ? lower_ghost : upper_ghost;
-    const int ghost_plane = below ? offset + kHaloPlanes : offset - slab;
-    if (ghost_plane < 0 || ghost_plane >= kHaloPlanes) {
-      throw std::logic_error("parallel: a stencil node beyond the ghost planes");
-    }
-    const std::size_t at = in_plane + ghost_plane * plane_size;
-    const std::size_t component = kHaloPlanes * plane_size;
-    return Vec3(ghost[at], ghost[component + at], ghost[2 * component + at]);
-  };
-  // Each owned point as ibm::interpolate_velocity sums it: slot by slot.
-  std::vector<double> mine;
-  mine.reserve(4 * owned_points_.size());
-  for (const std::size_t point : owned_points_) {
-    const auto nodes = stencil_.nodes(point);
-    const auto weights = stencil_.weights(point);
-    Vec3 u = Vec3::Zero();
-    for (std::size_t slot = 0; slot < nodes.size(); ++slot) {
-      u += weights[slot] * velocity_at(nodes[slot]);
-    }
-    mine.insert(mine.end(), {static_cast<double>(point), u.x(), u.y(), u.z()});
-  }
-  // Copies, no sums: rank 0 puts every point's velocity in place and hands the list to all.
-  const std::vector<double> gathered = communicator.gather_to_root(mine);
-  std::vector<double> flat(3 * stencil_.point_count(), 0.0);
-  std::string problem;
-  if (communicator.is_root()) {
-    if (gathered.size() != 4 * stencil_.point_count()) {
-      problem = "parallel: " + std::to_string(gathered.size() / 4) + " of " +
-                std::to_string(stencil_.point_count()) + " points interpolated";
-    }
-    for (std::size_t k = 0; k + 3 < gathered.size(); k += 4) {
-      const auto point = static_cast<std::size_t>(gathered[k]);
-      for (int axis = 0; axis < 3; ++axis) flat[3 * point + axis] = gathered[k + 1 + axis];
-    }
-  }
-  if (communicator.any(!problem.empty())) {
-    throw RuntimeFailure(problem.empty() ? "parallel: a point was not interpolated (see rank 0)"
-                                         : problem);
-  }
-  communicator.broadcast_from_root(flat);
-  std::vector<Vec3> velocities(stencil_.point_count());
-  for (std::size_t point = 0; point < velocities.size(); ++point) {
-    velocities[point] = Vec3(flat[3 * point], flat[3 * point + 1], flat[3 * point + 2]);
-  }
-  return velocities;
+  const InterpolationSource source{&stencil_, positions_lu_};
+  return std::move(interpolate_on_slabs(std::span(&source, 1), fluid).front());
 }
 
 }  // namespace rbcsim::parallel

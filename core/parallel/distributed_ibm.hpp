@@ -14,6 +14,7 @@
 #include "ibm/delta_kernels.hpp"
 #include "ibm/grid_view.hpp"
 #include "ibm/interpolation_stencil.hpp"
+#include "ibm/transfer.hpp"
 #include "parallel/distributed_fluid.hpp"
 
 #include <cstddef>
@@ -24,6 +25,29 @@
 
 namespace rbcsim::parallel {
 
+// Throws std::logic_error for a kernel whose support reaches beyond the ghost planes.
+const ibm::DeltaKernel& require_within_ghost_planes(const ibm::DeltaKernel& kernel);
+
+// Adds every source's forces (lattice units) times its weights to the force density of this
+// process's own nodes, each node's contributions source by source, point by point, as
+// ibm::spread_forces adds them on the undivided lattice. The stencils are of the whole lattice.
+void spread_onto_slab(std::span<const ibm::SpreadSource> sources, DistributedFluid& fluid);
+
+// A set of points whose velocities are wanted: their stencil (of the whole lattice) and the
+// positions it was built at (lattice units, not wrapped), which say which process interpolates.
+struct InterpolationSource {
+  const ibm::InterpolationStencil* stencil;
+  std::span<const Vec3> positions_lu;
+};
+
+// Collective: the fluid velocity at every point of every source (lattice units), the same on
+// every process. The process holding plane floor(z) of a point interpolates it, slot by slot as
+// ibm::interpolate_velocity; rank 0 collects the copies and hands them to all. Throws
+// RuntimeFailure on every process if a point was not interpolated.
+std::vector<std::vector<Vec3>> interpolate_on_slabs(std::span<const InterpolationSource> sources,
+                                                    const DistributedFluid& fluid);
+
+// One point set with its own stencil (rbcsim bench --ranks, tests).
 class DistributedImmersedBoundary {
  public:
   // `kernel`: a name of ibm::delta_kernels(). The stencils drop the fluid's wall nodes; every
@@ -35,24 +59,21 @@ class DistributedImmersedBoundary {
   // points this process interpolates. Throws RuntimeFailure as InterpolationStencil::build.
   void build(std::span<const Vec3> positions_lu);
   std::size_t point_count() const { return stencil_.point_count(); }
-  std::size_t owned_point_count() const { return owned_points_.size(); }
+  std::size_t owned_point_count() const { return owned_point_count_; }
 
-  // Adds every point's force (lattice units) times its weights to the force density of this
-  // process's own nodes.
+  // spread_onto_slab of the points' forces (lattice units).
   void spread(std::span<const Vec3> forces_lu, DistributedFluid& fluid) const;
-  // Collective: every point's velocity, the same on every process.
+  // Collective: interpolate_on_slabs of the points.
   std::vector<Vec3> interpolate(const DistributedFluid& fluid) const;
 
  private:
-  // The local node of global node `node` if this process holds its plane, else -1.
-  std::int64_t own_local_node(std::size_t node) const;
-
   const DistributedFluid& fluid_;
   const ibm::DeltaKernel& kernel_;
   ibm::GridView global_grid_;
   std::vector<std::uint8_t> solid_;  // the whole lattice's, one byte per node
   ibm::InterpolationStencil stencil_;
-  std::vector<std::size_t> owned_points_;
+  std::vector<Vec3> positions_lu_;
+  std::size_t owned_point_count_ = 0;
 };
 
 }  // namespace rbcsim::parallel

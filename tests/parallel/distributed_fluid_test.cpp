@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace rbcsim::parallel {
 namespace {
@@ -96,6 +97,42 @@ TEST(DistributedFluid, ANonFiniteVelocityStopsTheRunNamingTheGlobalNode) {
     EXPECT_NE(std::string(failure.what()).find("node (0, 0, 0)"), std::string::npos)
         << failure.what();
   }
+}
+
+// Cut from an undivided solver a case set up (CoupledSimulation across processes): its walls,
+// parameters and state after some steps, then stepped on as the undivided one, bit for bit.
+TEST(DistributedFluid, CutFromAnUndividedSolverStepsOnAsIt) {
+  const testing::DistributedCase flow = testing::case_named("aa_obstacle_across_slabs");
+  auto whole = testing::make_undivided(flow);
+  testing::advance_undivided(flow, *whole, 7);
+  DistributedFluid cut(Communicator::self(), *whole, 2);
+  EXPECT_EQ(cut.decomposition().block_count(), testing::kCaseNz / 2);
+  testing::advance_distributed(flow, cut, 8);
+  testing::advance_undivided(flow, *whole, 8);
+  EXPECT_EQ(cut.gather_stored_populations(),
+            whole->stored_populations(0, whole->grid().node_count()));
+}
+
+// What the slabs do not run yet is named, not run wrong.
+TEST(DistributedFluid, CutFromAnUndividedSolverRefusesBoundariesItDoesNotDistribute) {
+  const auto refusal = [](const lattice::FluidSolver& whole) {
+    try {
+      DistributedFluid cut(Communicator::self(), whole, 2);
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  const lattice::LatticeGrid grid(4, 4, 4);
+  lattice::FluidSolver moving(grid, {});
+  moving.set_wall(grid.index(0, 0, 0), {0.01, 0.0, 0.0});
+  EXPECT_NE(refusal(moving).find("moving walls"), std::string::npos) << refusal(moving);
+  lattice::FluidSolver outlet(grid, {});
+  outlet.set_pressure_outlet(grid.index(0, 1, 1), 1.0);
+  EXPECT_NE(refusal(outlet).find("pressure outlets"), std::string::npos) << refusal(outlet);
+  lattice::FluidSolver resting(grid, {});
+  resting.set_wall(grid.index(0, 0, 0));
+  EXPECT_EQ(refusal(resting), "accepted");
 }
 
 TEST(DistributedFluid, RefusesAViscosityContrastItDoesNotDistribute) {
