@@ -19,7 +19,9 @@
 #include "io/csv_table.hpp"
 #include "io/pvd_collection.hpp"
 #include "membrane/membrane_model.hpp"
+#include "parallel/communicator.hpp"
 #include "run_directory.hpp"
+#include "setup/coupling_from_config.hpp"
 #include "setup/membrane_from_config.hpp"
 #include "setup/stretch_from_config.hpp"
 
@@ -169,8 +171,20 @@ void write_table(const RunDirectory& directory, const cases::StretchRun& run) {
   io::write_csv_file(directory.path() / "stretch.csv", cases::stretch_table_columns(), rows);
 }
 
+// Under mpirun: only the fluid mode has a lattice to cut across processes.
+void require_stretch_runs_across_processes(const config::Config& config) {
+  if (parallel::Communicator::world().size() == 1) return;
+  if (config.string("stretch.mode") != "fluid") {
+    throw InputError("stretch.mode",
+                     "the quasi-static stretch has no lattice to run across processes: run it on "
+                     "one process (without mpirun), or use --mode fluid");
+  }
+  setup::require_runs_across_processes(config);
+}
+
 void run_stretch_command(const StretchOptions& options) {
   const auto config = resolve_stretch_config(options);
+  require_stretch_runs_across_processes(config);
   auto settings = setup::stretch_settings_from(config);
   require_fluid_mode_for_checkpoints(options, settings);
   const auto parameters = setup::membrane_parameters_from(config);
@@ -260,7 +274,7 @@ void attach_stretch(CLI::App& application) {
   command->callback([options] { run_stretch_command(*options); });
 }
 
-const bool registered = register_command({"stretch", 30, attach_stretch});
+const bool registered = register_command({"stretch", 30, attach_stretch, true});
 
 }  // namespace
 }  // namespace rbcsim::cli::stretch_command

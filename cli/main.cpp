@@ -6,11 +6,13 @@
 // and stops every process of the run (MPI_Abort) with the same exit code.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <streambuf>
 #include <string>
 
 #include "command_registry.hpp"
 #include "common/errors.hpp"
 #include "common/interrupt.hpp"
+#include "io/atomic_file.hpp"
 #include "parallel/communicator.hpp"
 
 namespace {
@@ -18,12 +20,19 @@ namespace {
 // Commands that do not run on several processes yet are refused before they start.
 void refuse_on_several_processes(CLI::App& command, int processes) {
   command.preparse_callback([name = command.get_name(), processes](std::size_t) {
-    throw rbcsim::InputError("rbcsim " + name,
-                             "runs on one process only, not yet under mpirun (" +
-                                 std::to_string(processes) +
-                                 " processes started); `rbcsim bench --ranks` does");
+    throw rbcsim::InputError(
+        "rbcsim " + name,
+        "runs on one process only, not yet under mpirun (" + std::to_string(processes) +
+            " processes started); `rbcsim shear`, `rbcsim stretch --mode fluid` and "
+            "`rbcsim bench --ranks` do");
   });
 }
+
+// Where the output of the processes other than rank 0 goes: they compute what rank 0 does.
+class DiscardingBuffer : public std::streambuf {
+ protected:
+  int overflow(int character) override { return traits_type::not_eof(character); }
+};
 
 }  // namespace
 
@@ -36,18 +45,27 @@ int main(int argc, char** argv) {
   }
   const rbcsim::parallel::MpiSession mpi(argc, argv);
   const auto world = rbcsim::parallel::Communicator::world();
+  // Rank 0 alone prints and writes files; the others keep stderr for their own failures.
+  std::ostream error_line(std::cerr.rdbuf());
+  if (!world.is_root()) {
+    // Never destroyed: the standard streams may be flushed after main returns.
+    static auto* const discarded = new DiscardingBuffer;
+    std::cout.rdbuf(discarded);
+    std::cerr.rdbuf(discarded);
+    rbcsim::io::set_process_writes_files(false);
+  }
   // Bad input: identical on every process, said once. Failures: said where they happen, and the
   // whole run stops, so that no process waits forever for one that has left.
-  const auto bad_input = [&world](const std::string& line) {
-    if (world.is_root()) std::cerr << line << '\n';
+  const auto bad_input = [&world, &error_line](const std::string& line) {
+    if (world.is_root()) error_line << line << '\n';
     return rbcsim::kExitBadInput;
   };
-  const auto failure = [&world](const std::string& line, int code) {
+  const auto failure = [&world, &error_line](const std::string& line, int code) {
     if (world.size() == 1) {
-      std::cerr << line << '\n';
+      error_line << line << '\n';
       return code;
     }
-    std::cerr << "[rank " << world.rank() << "] " << line << '\n';
+    error_line << "[rank " << world.rank() << "] " << line << std::endl;
     world.abort(code);
   };
   CLI::App application{

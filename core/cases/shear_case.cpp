@@ -451,7 +451,8 @@ ShearPoint sweep_rate(const membrane::MembraneModel& model, const mesh::Triangle
   if (rate_index < hooks.completed.size() && hooks.completed[rate_index]) {
     return *hooks.completed[rate_index];
   }
-  if (interrupt_requested()) {
+  // Across processes all agree, so that none starts a rate the others skip.
+  if (engine.coupling.processes.any(interrupt_requested())) {
     ShearPoint point;
     point.plan = plan;
     point.interrupted = true;
@@ -470,7 +471,9 @@ std::vector<ShearPoint> run_shear_sweep(const membrane::MembraneModel& model,
                                         const ShearHooks& hooks) {
   std::vector<ShearPoint> points(plans.size());
   const auto count = static_cast<int>(plans.size());
-  if (rate_threads <= 1 || count <= 1) {
+  // Across processes the rates take turns: their steps talk to the other processes, from the main
+  // thread only (parallel/communicator.hpp); the threads then go to each step's kernels.
+  if (rate_threads <= 1 || count <= 1 || engine.coupling.processes.size() > 1) {
     for (std::size_t i = 0; i < plans.size(); ++i) {
       points[i] = sweep_rate(model, cell, engine, settings, plans[i], i, hooks);
     }

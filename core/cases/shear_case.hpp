@@ -194,7 +194,8 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
                           const ShearHooks& hooks);
 
 // Every rate, `rate_threads` at a time (each simulation single-threaded then; results are the
-// same as one by one, every phase being deterministic). One point per rate, in order. After an
+// same as one by one, every phase being deterministic); across processes
+// (engine.coupling.processes) one at a time. One point per rate, in order. After an
 // interrupt (common/interrupt.hpp) the rates not yet started are reported interrupted, unrun.
 std::vector<ShearPoint> run_shear_sweep(const membrane::MembraneModel& model,
                                         const mesh::TriangleMesh& cell, const ShearEngine& engine,

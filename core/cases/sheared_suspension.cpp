@@ -482,6 +482,7 @@ ShearedSuspensionRun run_sheared_suspension(std::span<const SuspensionMorphology
       "sheared_suspension_samples", interval_steps,
       ShearedSuspensionRecorder(run, sampled_at_steps, settings, box.gap_nodes(), rate_lu)};
   recorder.needs_term_forces = true;  // the membrane viscosity's friction, for sigma_p
+  recorder.reads_fluid = true;        // the velocity next to the walls
   simulation.add_observer(std::move(recorder));
   simulation.add_stop_criterion(
       coupling::stop_at_time(settings.strain / settings.shear_rate_per_s));

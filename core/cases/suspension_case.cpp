@@ -481,9 +481,11 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
   simulation.set_cell_contact(settings.contact, "suspension.contact_force_pN");
   const std::size_t sample_steps = interval_steps(physics.units, settings.sample_interval_s);
   std::vector<std::size_t> sampled_at_steps;
-  simulation.add_observer(
-      {"suspension_samples", sample_steps,
-       SuspensionRecorder(run, sampled_at_steps, settings, cell_volumes_um3, plasma_flow_lu)});
+  coupling::Observer recorder{
+      "suspension_samples", sample_steps,
+      SuspensionRecorder(run, sampled_at_steps, settings, cell_volumes_um3, plasma_flow_lu)};
+  recorder.reads_fluid = true;  // the flow rate
+  simulation.add_observer(std::move(recorder));
   simulation.add_stop_criterion(coupling::stop_at_time(settings.duration_s));
   simulation.add_stop_criterion(std::make_unique<SuspensionRecord>(
       run, sampled_at_steps, sample_steps, cell_morphologies.size(), settings.profile_rings));

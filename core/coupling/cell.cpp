@@ -110,6 +110,21 @@ void Cell::interpolate_and_advance(const ibm::GridView& grid,
                                    const lattice::VectorField& velocity) {
   ibm::interpolate_velocity(stencil_, grid, velocity[0].data(), velocity[1].data(),
                             velocity[2].data(), velocities_lu_);
+  advance();
+}
+
+void Cell::advance_with(std::span<const Vec3> interpolated_velocities_lu) {
+  if (interpolated_velocities_lu.size() != velocities_lu_.size()) {
+    throw std::invalid_argument(
+        "Cell::advance_with: " + std::to_string(interpolated_velocities_lu.size()) +
+        " velocities for " + std::to_string(velocities_lu_.size()) + " vertices");
+  }
+  std::copy(interpolated_velocities_lu.begin(), interpolated_velocities_lu.end(),
+            velocities_lu_.begin());
+  advance();
+}
+
+void Cell::advance() {
   // After an implicit friction step the membrane moves as that step found it (the friction acted
   // on the fluid's state after streaming, which the latest collision's velocity precedes).
   if (friction_applied_) {

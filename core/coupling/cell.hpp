@@ -97,6 +97,11 @@ class Cell {
   void add_membrane_friction(lattice::FluidSolver& fluid) const;
   // Phases 4-5: interpolates `velocity` with the same stencil, then moves the vertices (dt = 1).
   void interpolate_and_advance(const ibm::GridView& grid, const lattice::VectorField& velocity);
+  // The same with the velocities interpolated elsewhere (on the distributed lattice,
+  // parallel/distributed_ibm.hpp), one per vertex, with stencil().
+  void advance_with(std::span<const Vec3> interpolated_velocities_lu);
+  // The stencil of the latest prepare_spread.
+  const ibm::InterpolationStencil& stencil() const { return stencil_; }
 
   // Checkpoints, between steps: positions (current and previous), the latest velocities and the
   // point-advance history, each array named `<prefix>...`. Forces are not saved: the next step
@@ -123,6 +128,9 @@ class Cell {
   std::size_t friction_iterations_ = 0;
   ibm::InterpolationStencil stencil_;
   ibm::PointAdvancer advancer_;
+
+  // Phase 5 from velocities_lu_ (or the friction step's velocities).
+  void advance();
 };
 
 }  // namespace rbcsim::coupling

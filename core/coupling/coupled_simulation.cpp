@@ -9,6 +9,8 @@
 #include "common/interrupt.hpp"
 #include "coupling/checkpoint.hpp"
 #include "coupling/snapshot.hpp"
+#include "parallel/distributed_fluid.hpp"
+#include "parallel/distributed_ibm.hpp"
 
 namespace rbcsim::coupling {
 namespace {
@@ -76,6 +78,47 @@ CoupledSimulation::CoupledSimulation(std::unique_ptr<lattice::FluidSolver> fluid
   if (fluid_->has_viscosity_contrast()) {
     cytoplasm_.emplace(0.5 * kernel_->support_width, parameters_.cytoplasm_update_lu);
   }
+  if (parameters_.processes.size() > 1) {
+    parallel::require_within_ghost_planes(*kernel_);
+    distributed_ = std::make_unique<parallel::DistributedFluid>(parameters_.processes, *fluid_,
+                                                                parameters_.block_planes);
+  }
+}
+
+CoupledSimulation::~CoupledSimulation() = default;
+CoupledSimulation::CoupledSimulation(CoupledSimulation&&) noexcept = default;
+CoupledSimulation& CoupledSimulation::operator=(CoupledSimulation&&) noexcept = default;
+
+const lattice::FluidSolver& CoupledSimulation::fluid() const {
+  if (distributed_ && fluid_gathered_step_ != time_step_) {
+    throw std::logic_error(
+        "CoupledSimulation::fluid(): across processes the fluid is gathered only for observers "
+        "that declare reads_fluid, at the end of run() and for a failure dump");
+  }
+  return *fluid_;
+}
+
+bool CoupledSimulation::on_any_process(bool local) const {
+  return distributed_ ? parameters_.processes.any(local) : local;
+}
+
+void CoupledSimulation::gather_fluid() {
+  if (!distributed_ || fluid_gathered_step_ == time_step_) return;
+  const parallel::Communicator& processes = parameters_.processes;
+  StateArchive gathered("the distributed fluid");
+  distributed_->save_state(gathered);  // on rank 0
+  // The undivided solver's own arrays name what to copy and their sizes.
+  StateArchive shape("the undivided fluid");
+  fluid_->save_state(shape);
+  StateArchive whole("the distributed fluid");
+  for (const auto& [name, values] : shape.arrays()) {
+    std::vector<double> array = processes.is_root() ? gathered.take(name, values.size())
+                                                    : std::vector<double>(values.size());
+    processes.broadcast_from_root(array);
+    whole.put(name, std::move(array));
+  }
+  fluid_->restore_state(whole);
+  fluid_gathered_step_ = time_step_;
 }
 
 std::size_t CoupledSimulation::add_cell(membrane::MembraneModel model,
@@ -93,6 +136,11 @@ std::size_t CoupledSimulation::add_cell(membrane::MembraneModel model,
     cell.compute_membrane_forces(frame_);
   } catch (const RuntimeFailure& failure) {
     throw InputError(cell_label(index), std::string("initial shape: ") + failure.what());
+  }
+  if (distributed_ && cell.has_membrane_friction()) {
+    throw InputError("membrane.forces",
+                     "the membrane viscosity does not run on the distributed lattice yet: run on "
+                     "one process (without mpirun)");
   }
   cells_.push_back(std::move(cell));
   force_cap_monitors_.emplace_back();
@@ -258,18 +306,30 @@ void CoupledSimulation::spread_forces() {
   });
   spread_sources_.clear();
   for (const Cell& cell : cells_) spread_sources_.push_back(cell.spread_source());
-  auto& force_density = fluid_->force_density();
-  ibm::spread_forces(spread_sources_, grid_, force_density[0].data(), force_density[1].data(),
-                     force_density[2].data());
+  if (distributed_) {
+    parallel::spread_onto_slab(spread_sources_, *distributed_);
+  } else {
+    auto& force_density = fluid_->force_density();
+    ibm::spread_forces(spread_sources_, grid_, force_density[0].data(), force_density[1].data(),
+                       force_density[2].data());
+  }
   lap(start, phase_times_.spread_s);
   forces_spread_ = true;
 }
 
 void CoupledSimulation::advance_fluid() {
-  fluid_->step();
+  if (distributed_) {
+    distributed_->step();
+  } else {
+    fluid_->step();
+  }
   if ((time_step_ + 1) % parameters_.stability.fluid_check_interval_steps == 0) {
     try {
-      fluid_->require_finite_velocity();
+      if (distributed_) {
+        distributed_->require_finite_velocity();  // on every process
+      } else {
+        fluid_->require_finite_velocity();
+      }
     } catch (const RuntimeFailure& failure) {
       fail(std::nullopt, failure.what());
     }
@@ -281,6 +341,7 @@ void CoupledSimulation::advance_fluid() {
 // friction a step later than in a solve of all cells together, as their forces meet (first order
 // in the step, like the explicit coupling itself).
 void CoupledSimulation::apply_membrane_friction() {
+  if (distributed_) return;  // no cell has membrane viscosity there (add_cell)
   const lattice::FluidSolver& fluid = *fluid_;
   for_each_cell([this, &fluid](std::size_t k) {
     cells_[k].solve_membrane_friction(fluid, frame_, time_step_ + 1);
@@ -289,6 +350,18 @@ void CoupledSimulation::apply_membrane_friction() {
 }
 
 void CoupledSimulation::advance_cells() {
+  if (distributed_) {
+    std::vector<parallel::InterpolationSource> sources;
+    for (const Cell& cell : cells_) sources.push_back({&cell.stencil(), cell.positions_lu()});
+    std::vector<std::vector<Vec3>> velocities;
+    try {
+      velocities = parallel::interpolate_on_slabs(sources, *distributed_);
+    } catch (const RuntimeFailure& failure) {
+      fail(std::nullopt, failure.what());
+    }
+    for_each_cell([this, &velocities](std::size_t k) { cells_[k].advance_with(velocities[k]); });
+    return;
+  }
   for_each_cell(
       [this](std::size_t k) { cells_[k].interpolate_and_advance(grid_, fluid_->velocity()); });
 }
@@ -334,6 +407,7 @@ void CoupledSimulation::step() {
 
 void CoupledSimulation::notify(RegisteredObserver& registered) {
   if (registered.observer.needs_term_forces) add_term_forces();
+  if (registered.observer.reads_fluid) gather_fluid();
   registered.observer.observe(*this);
   registered.last_observed_step = time_step_;
 }
@@ -364,12 +438,13 @@ RunSummary CoupledSimulation::run() {
   std::optional<std::string> reason;
   auto last_checkpoint = Clock::now();
   while (!reason) {
-    if (interrupt_requested()) stop_interrupted();
+    if (on_any_process(interrupt_requested())) stop_interrupted();
     step();
     ++summary.steps;
     reason = stop_reason();
     if (!reason) checkpoint_if_due(last_checkpoint);
   }
+  gather_fluid();
   notify_observers_of_final_state();
   summary.time_s = time_s();
   summary.stop_reason = *reason;
@@ -384,6 +459,7 @@ void CoupledSimulation::notify_observers_of_final_state() {
 }
 
 void CoupledSimulation::stop_interrupted() {
+  gather_fluid();
   notify_observers_of_final_state();
   write_checkpoint_now();
   throw_if_interrupted();
@@ -394,9 +470,11 @@ void CoupledSimulation::checkpoint_if_due(Clock::time_point& last_checkpoint) co
   const auto& policy = checkpoint_policy_;
   if (policy.file.empty()) return;
   const bool steps_due = policy.every_steps > 0 && time_step_ % policy.every_steps == 0;
+  // Across processes every clock has its say: all write (collectively) when any is due.
   const bool time_due =
       policy.every_wall_s > 0.0 &&
-      std::chrono::duration<double>(Clock::now() - last_checkpoint).count() >= policy.every_wall_s;
+      on_any_process(std::chrono::duration<double>(Clock::now() - last_checkpoint).count() >=
+                     policy.every_wall_s);
   if (!steps_due && !time_due) return;
   write_checkpoint_now();
   last_checkpoint = Clock::now();
@@ -417,7 +495,11 @@ void CoupledSimulation::save_state(StateArchive& archive) const {
   archive.put("simulation.time_step", {static_cast<double>(time_step_)});
   archive.put("simulation.close_contact_steps", {static_cast<double>(close_contact_steps_)});
   archive.put("simulation.capped_contact_steps", {static_cast<double>(capped_contact_steps_)});
-  fluid_->save_state(archive);
+  if (distributed_) {
+    distributed_->save_state(archive);  // the undivided solver's arrays, on rank 0
+  } else {
+    fluid_->save_state(archive);
+  }
   if (cytoplasm_) cytoplasm_->save_state(archive);
   for (std::size_t k = 0; k < cells_.size(); ++k) {
     cells_[k].save_state(archive, cell_prefix(k));
@@ -434,7 +516,18 @@ void CoupledSimulation::restore_state(StateArchive& archive) {
       static_cast<std::size_t>(archive.take_number("simulation.close_contact_steps"));
   capped_contact_steps_ =
       static_cast<std::size_t>(archive.take_number("simulation.capped_contact_steps"));
-  fluid_->restore_state(archive);
+  if (distributed_) {
+    distributed_->restore_state(archive);  // from rank 0's archive
+    if (!parameters_.processes.is_root()) {
+      // The others read the same file: its fluid arrays are taken, not left over.
+      StateArchive shape("the undivided fluid");
+      fluid_->save_state(shape);
+      for (const auto& entry : shape.arrays()) archive.take(entry.first, std::nullopt);
+    }
+    fluid_gathered_step_.reset();
+  } else {
+    fluid_->restore_state(archive);
+  }
   if (cytoplasm_) cytoplasm_->restore_state(archive, cells_);
   for (std::size_t k = 0; k < cells_.size(); ++k) {
     cells_[k].restore_state(archive, cell_prefix(k), frame_);
@@ -469,6 +562,7 @@ void CoupledSimulation::fail(std::optional<std::size_t> cell, const std::string&
       add_term_forces();
     } catch (const RuntimeFailure&) {
     }
+    gather_fluid();
     write_failure_dump(directory, *this, cell, reason);
   } catch (const std::exception& dump_error) {
     throw RuntimeFailure(where + "; the dump to " + directory.string() +

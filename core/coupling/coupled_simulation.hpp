@@ -15,6 +15,13 @@
 //   6. stability checks (stability.hpp), then the observers that are due.
 // Every phase is deterministic, so results do not depend on the number of OpenMP threads.
 //
+// Across processes (CouplingParameters::processes, more than one): the fluid runs on the
+// distributed lattice (parallel/distributed_fluid.hpp), cut from the undivided solver the case set
+// up; every process holds every cell and computes its forces; each spreads them onto its own
+// planes and interpolates the vertices in its planes, and the velocities are copied to all
+// (parallel/distributed_ibm.hpp). The state is bit-identical to one process's, on any number of
+// processes. Observers and stop criteria run on every process alike; only rank 0 writes files.
+//
 // An instability stops the run (docs/physics.md, "Failures"): if a run directory is set, a dump
 // (membrane .vtp of every cell, fluid .vti, failure.json) is written to <run directory>/failure/,
 // then RuntimeFailure("step N, cell K: reason; dump written to DIR") is thrown (exit code 1).
@@ -43,7 +50,12 @@
 #include "ibm/grid_view.hpp"
 #include "ibm/point_advance.hpp"
 #include "lattice/fluid_solver.hpp"
+#include "parallel/communicator.hpp"
 #include "units/unit_converter.hpp"
+
+namespace rbcsim::parallel {
+class DistributedFluid;
+}
 
 namespace rbcsim::coupling {
 
@@ -56,6 +68,12 @@ struct CouplingParameters {
   StabilityLimits stability;
   // Where failure dumps go (and what observers may write to); empty: no dump.
   std::filesystem::path run_directory;
+  // The processes the fluid is cut across: one (the default) steps the undivided solver, several
+  // its slabs. Not distributed yet (InputError): a viscosity contrast, membrane viscosity, moving
+  // walls, inlets, outlets, curved wall links.
+  parallel::Communicator processes = parallel::Communicator::self();
+  // lattice.block_planes: the z-planes of one block of the decomposition (at least 2).
+  int block_planes = 4;
 };
 
 // When run() writes a checkpoint (checkpoint.hpp) to `file`: every `every_steps` steps, every
@@ -82,6 +100,8 @@ struct Observer {
   // only the totals it spreads, and the per-term forces of that step are added before such an
   // observer is called.
   bool needs_term_forces = false;
+  // Whether it reads fluid(): across processes, the fluid is then gathered before it is called.
+  bool reads_fluid = false;
 };
 
 // Adds forces (pN) to a cell's vertices every step, e.g. optical tweezers. Called after the
@@ -124,8 +144,13 @@ class CoupledSimulation {
   // The fluid's geometry (walls, inlets) must be set before; the simulation owns it from here.
   // `units` converts forces and fixes dx; `origin_um` is where lattice node (0, 0, 0) sits.
   // Throws InputError for an unknown kernel or point-advance scheme.
+  // Across processes (parameters.processes), every process passes the same fluid; InputError
+  // for what does not run there yet.
   CoupledSimulation(std::unique_ptr<lattice::FluidSolver> fluid, const units::UnitConverter& units,
                     CouplingParameters parameters, const Vec3& origin_um = Vec3::Zero());
+  ~CoupledSimulation();
+  CoupledSimulation(CoupledSimulation&&) noexcept;
+  CoupledSimulation& operator=(CoupledSimulation&&) noexcept;
 
   // Adds a cell whose vertices start at positions_um (one per vertex of the model); returns its
   // index. Throws InputError naming the cell if a vertex lies outside the domain or in a wall.
@@ -175,7 +200,15 @@ class CoupledSimulation {
   // them without asking; call it before reading MembraneForces::terms elsewhere.
   void add_term_forces();
 
-  const lattice::FluidSolver& fluid() const { return *fluid_; }
+  // The fluid of the whole lattice. Across processes, a copy gathered for the observers that
+  // declare reads_fluid, at the end of run() and for a failure dump: reading it at another step
+  // throws std::logic_error.
+  const lattice::FluidSolver& fluid() const;
+  // Whether the fluid runs across several processes.
+  bool distributed() const { return distributed_ != nullptr; }
+  // Across processes (collective): the distributed fluid's state copied into fluid() on every
+  // process, unless it already holds this step's; nothing on one process.
+  void gather_fluid();
   std::span<const Cell> cells() const { return cells_; }
   const Cell& cell(std::size_t index) const { return cells_.at(index); }
   // Where a cell's vertices are now (after the latest step), in um: what observers measure.
@@ -217,8 +250,14 @@ class CoupledSimulation {
   [[noreturn]] void stop_interrupted();
   // Writes the failure dump (if there is a run directory) and throws RuntimeFailure.
   [[noreturn]] void fail(std::optional<std::size_t> cell, const std::string& reason);
+  // Whether `local` holds on any process (collective across processes).
+  bool on_any_process(bool local) const;
 
+  // The undivided fluid; across processes its geometry, and a gathered copy of the state at
+  // step fluid_gathered_step_ (none: not since a restore).
   std::unique_ptr<lattice::FluidSolver> fluid_;
+  std::unique_ptr<parallel::DistributedFluid> distributed_;
+  std::optional<std::size_t> fluid_gathered_step_ = 0;
   units::UnitConverter units_;
   CouplingParameters parameters_;
   LatticeFrame frame_;

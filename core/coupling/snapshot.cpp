@@ -204,7 +204,8 @@ void add_vtk_output(CoupledSimulation& simulation, const std::filesystem::path& 
   if (intervals.fluid_steps > 0) {
     simulation.add_observer({"vtk_fluid", intervals.fluid_steps,
                              [state](const CoupledSimulation& s) { write_fluid(*state, s); },
-                             [state](const CoupledSimulation& s) { continue_fluid(*state, s); }});
+                             [state](const CoupledSimulation& s) { continue_fluid(*state, s); },
+                             /*needs_term_forces=*/false, /*reads_fluid=*/true});
   }
 }
 

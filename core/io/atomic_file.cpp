@@ -10,6 +10,8 @@
 namespace rbcsim::io {
 namespace {
 
+bool g_process_writes_files = true;
+
 std::filesystem::path temporary_sibling(const std::filesystem::path& path) {
   std::random_device entropy;
   // Built by appending: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
@@ -23,6 +25,7 @@ std::filesystem::path temporary_sibling(const std::filesystem::path& path) {
 
 void write_file_atomically(const std::filesystem::path& path,
                            const std::function<void(std::ostream&)>& write) {
+  if (!g_process_writes_files) return;
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
   const auto temporary = temporary_sibling(path);
   try {
@@ -44,5 +47,9 @@ void write_file_atomically(const std::filesystem::path& path,
 void write_text_atomically(const std::filesystem::path& path, std::string_view text) {
   write_file_atomically(path, [text](std::ostream& out) { out << text; });
 }
+
+void set_process_writes_files(bool writes) { g_process_writes_files = writes; }
+
+bool process_writes_files() { return g_process_writes_files; }
 
 }  // namespace rbcsim::io

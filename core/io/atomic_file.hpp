@@ -17,4 +17,10 @@ void write_file_atomically(const std::filesystem::path& path,
 
 void write_text_atomically(const std::filesystem::path& path, std::string_view text);
 
+// Whether this process writes output files (default: yes). In a run across processes every
+// process holds the same results and only rank 0 writes them (cli/main.cpp): on the others the two
+// functions above return without writing.
+void set_process_writes_files(bool writes);
+bool process_writes_files();
+
 }  // namespace rbcsim::io

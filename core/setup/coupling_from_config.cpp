@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "common/errors.hpp"
+#include "parallel/communicator.hpp"
 
 namespace rbcsim::setup {
 namespace {
@@ -42,7 +46,26 @@ coupling::CouplingParameters coupling_parameters_from(const config::Config& conf
   stability.fluid_check_interval_steps =
       static_cast<std::size_t>(config.integer("stability.fluid_check_interval_steps"));
   parameters.run_directory = run_directory;
+  // Every process the run was started on (one without mpirun).
+  parameters.processes = parallel::Communicator::world();
+  parameters.block_planes = static_cast<int>(config.integer("lattice.block_planes"));
   return parameters;
+}
+
+void require_runs_across_processes(const config::Config& config) {
+  if (parallel::Communicator::world().size() == 1) return;
+  if (config.number("physics.cytoplasm_viscosity_ratio") != 1.0) {
+    throw InputError("physics.cytoplasm_viscosity_ratio",
+                     "a viscosity contrast does not run across processes yet: set it to 1 or run "
+                     "on one process (without mpirun)");
+  }
+  const auto forces = config.string_list("membrane.forces");
+  if (std::ranges::find(forces, "viscosity") != forces.end() &&
+      config.number("membrane.viscosity_Pa_s_um") > 0.0) {
+    throw InputError("membrane.forces",
+                     "the membrane viscosity does not run across processes yet: leave it out "
+                     "(the paper preset) or run on one process (without mpirun)");
+  }
 }
 
 coupling::SnapshotIntervals snapshot_intervals_from(const config::Config& config,

@@ -17,9 +17,16 @@ namespace rbcsim::setup {
 // cytoplasm's viscosity ratio.
 lattice::FluidParameters fluid_parameters_from(const config::Config& config);
 
-// IBM kernel and point advance, stability limits, and where failure dumps go.
+// IBM kernel and point advance, stability limits, where failure dumps go, and the processes of
+// the run (every process mpirun started; one without it) with lattice.block_planes.
 coupling::CouplingParameters coupling_parameters_from(const config::Config& config,
                                                       const std::filesystem::path& run_directory);
+
+// Under mpirun with several processes: InputError naming the first setting of `config` the
+// distributed lattice does not run yet (physics.cytoplasm_viscosity_ratio other than 1, membrane
+// viscosity in membrane.forces), so that a command stops before it writes anything. The
+// simulation checks again (CoupledSimulation), with the case's geometry (walls, inlets) too.
+void require_runs_across_processes(const config::Config& config);
 
 // Snapshot intervals in steps: each output.*_interval_s rounded to the nearest whole number of
 // steps (at least one); 0 stays 0 (no snapshots).

@@ -33,6 +33,19 @@ TEST(AtomicFile, WritesCompleteContent) {
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(directory), {}), 1);
 }
 
+// The processes other than rank 0 of a run across processes write nothing (cli/main.cpp).
+TEST(AtomicFile, AProcessThatDoesNotWriteFilesLeavesTheDirectoryAlone) {
+  const auto directory = fresh_directory("atomic_silent");
+  rbcsim::io::set_process_writes_files(false);
+  rbcsim::io::write_text_atomically(directory / "sub" / "result.json", "{}\n");
+  const bool wrote = std::filesystem::exists(directory / "sub");
+  rbcsim::io::set_process_writes_files(true);
+  EXPECT_FALSE(wrote);
+  EXPECT_TRUE(rbcsim::io::process_writes_files());
+  rbcsim::io::write_text_atomically(directory / "result.json", "{}\n");
+  EXPECT_EQ(read_all(directory / "result.json"), "{}\n");
+}
+
 TEST(AtomicFile, FailedWriteLeavesOldFileAndNoTemporary) {
   const auto directory = fresh_directory("atomic_fail");
   rbcsim::io::write_text_atomically(directory / "result.json", "old");

@@ -1,5 +1,6 @@
 #include "common/registry.hpp"
 #include "config/options/option_areas.hpp"
+#include "coupling/coupled_simulation.hpp"
 #include "lattice/boundaries.hpp"
 #include "lattice/collision.hpp"
 #include "lattice/fluid_kernel.hpp"
@@ -34,6 +35,13 @@ void add_lattice_options(OptionTable& table) {
   table.add_choice("lattice.precision", entry_names(lattice::precisions()), "double",
                    "Population storage: double, or single (floats of f_i - w_i, half the memory "
                    "traffic; optimised kernel only; docs/physics.md, single precision).");
+  // Two planes at least: the halo exchange fills two ghost planes from one neighbour.
+  table
+      .add_integer("lattice.block_planes", "", coupling::CouplingParameters{}.block_planes,
+                   "Under mpirun: the lattice is cut into blocks of this many z-planes, dealt to "
+                   "the processes by their fluid nodes (docs/architecture.md, across processes); "
+                   "results do not depend on it or on the process count.")
+      .at_least(2);
 }
 
 }  // namespace rbcsim::config

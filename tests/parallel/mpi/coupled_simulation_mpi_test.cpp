@@ -1,0 +1,150 @@
+// The coupled loop (CoupledSimulation) on every process of an MPI run: 20 capsules in a periodic
+// box sheared by a Lees-Edwards plane, pushed along z across the blocks and the periodic seam,
+// touching (contact), stepped on the distributed lattice. Rank 0 compares the cells and the
+// gathered fluid with the same run on one undivided solver, bit for bit: so the state is the same
+// on any number of processes. A checkpoint written on all processes resumes on half of them.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "coupling/checkpoint.hpp"
+#include "coupling/coupled_simulation.hpp"
+#include "io/atomic_file.hpp"
+#include "membrane/membrane_model.hpp"
+#include "mesh/icosphere.hpp"
+#include "parallel/communicator.hpp"
+#include "units/unit_converter.hpp"
+
+#include <unistd.h>
+
+namespace rbcsim::parallel::coupled_mpi {
+namespace {
+
+constexpr std::size_t kCells = 20;
+constexpr double kPushPerVertexPN = 0.2;
+
+// dx = 0.5 um, tau = 1: plasma.
+units::UnitConverter plasma_units() { return units::UnitConverter({0.5, 1.0, 1025.0, 1.1e-6}); }
+
+// 16 x 14 x 24 nodes (8 x 7 x 12 um), periodic, the y faces sliding at +-0.01 (lattice units).
+std::unique_ptr<lattice::FluidSolver> sheared_box() {
+  lattice::FluidParameters parameters;
+  parameters.lees_edwards_velocity = 0.02;
+  return std::make_unique<lattice::FluidSolver>(lattice::LatticeGrid(16, 14, 24), parameters);
+}
+
+// 20 spheres of radius 1 um (42 vertices) on a 3 x 2 x 4 lattice of centres, away from the sliding
+// plane (the IBM does not reach across it); the first rows of z straddle the periodic seam.
+std::unique_ptr<coupling::CoupledSimulation> suspension(const Communicator& processes) {
+  coupling::CouplingParameters coupling;
+  coupling.processes = processes;
+  coupling.block_planes = 2;
+  auto simulation = std::make_unique<coupling::CoupledSimulation>(sheared_box(), plasma_units(),
+                                                                  std::move(coupling));
+  membrane::MembraneParameters capsule;
+  capsule.forces = {"link", "area", "volume"};
+  capsule.k_link_kBT = 300.0;
+  std::size_t added = 0;
+  for (const double z_um : {0.2, 3.2, 6.2, 9.2}) {
+    for (const double y_um : {2.3, 4.7}) {
+      for (const double x_um : {1.3, 3.9, 6.5}) {
+        if (added == kCells) break;
+        auto sphere = mesh::unit_icosphere(1);
+        for (Vec3& p : sphere.positions_um) p = Vec3(x_um, y_um, z_um) + 1.0 * p;
+        simulation->add_cell(membrane::MembraneModel(sphere, capsule), sphere.positions_um);
+        ++added;
+      }
+    }
+  }
+  simulation->add_external_force([](std::size_t cell, const coupling::Cell&, std::span<Vec3> f) {
+    const double direction = cell % 2 == 0 ? 1.0 : -1.0;
+    for (Vec3& force : f) force.z() += direction * kPushPerVertexPN;
+  });
+  simulation->set_cell_contact({50.0, 0.5}, "test");
+  return simulation;
+}
+
+void advance(coupling::CoupledSimulation& simulation, std::size_t steps) {
+  for (std::size_t step = 0; step < steps; ++step) simulation.step();
+}
+
+// Every vertex of every cell, then every stored population of the gathered fluid.
+std::vector<double> state_of(coupling::CoupledSimulation& simulation) {
+  simulation.gather_fluid();
+  std::vector<double> state;
+  for (const auto& cell : simulation.cells()) {
+    for (const Vec3& p : cell.positions_lu()) state.insert(state.end(), {p.x(), p.y(), p.z()});
+  }
+  const auto& fluid = simulation.fluid();
+  const auto populations = fluid.stored_populations(0, fluid.grid().node_count());
+  state.insert(state.end(), populations.begin(), populations.end());
+  return state;
+}
+
+std::size_t differing(const std::vector<double>& a, const std::vector<double>& b) {
+  if (a.size() != b.size()) return std::max(a.size(), b.size());
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < a.size(); ++k) count += a[k] != b[k] ? 1 : 0;
+  return count;
+}
+
+TEST(ProcessesCoupledSimulation, TwentyCellsMoveAsOnTheUndividedLatticeBitForBit) {
+  constexpr std::size_t kSteps = 40;
+  const Communicator world = Communicator::world();
+  auto distributed = suspension(world);
+  EXPECT_EQ(distributed->distributed(), world.size() > 1);
+  const Vec3 start_lu = distributed->cell(0).centroid_lu();
+  advance(*distributed, kSteps);
+  const auto state = state_of(*distributed);
+  if (!world.is_root()) return;
+  auto undivided = suspension(Communicator::self());
+  advance(*undivided, kSteps);
+  const auto expected = state_of(*undivided);
+  // The cells moved (pushed along z, carried along x by the shear), not a still state.
+  EXPECT_GT((undivided->cell(0).centroid_lu() - start_lu).norm(), 0.01);
+  EXPECT_EQ(differing(state, expected), 0u)
+      << "of " << expected.size() << " values on " << world.size() << " processes";
+}
+
+// Written on every process of the run, resumed on the first half of them (4 -> 2, 3 -> 2, 2 -> 1):
+// the uninterrupted undivided run's state, bit for bit. Only rank 0 writes files (cli/main.cpp).
+TEST(ProcessesCoupledSimulation, CheckpointWrittenOnAllResumesOnHalfBitForBit) {
+  constexpr std::size_t kBefore = 17;
+  constexpr std::size_t kAfter = 13;
+  const Communicator world = Communicator::world();
+  io::set_process_writes_files(world.is_root());
+  double root_pid = static_cast<double>(::getpid());
+  world.broadcast_from_root(std::span<double>(&root_pid, 1));
+  const auto file = std::filesystem::temp_directory_path() /
+                    ("rbcsim_mpi_coupled_" + std::to_string(static_cast<long>(root_pid)) + ".bin");
+  {
+    auto simulation = suspension(world);
+    advance(*simulation, kBefore);
+    coupling::write_checkpoint(file, *simulation, "mpi test");
+  }
+  world.barrier();
+  const int half = (world.size() + 1) / 2;
+  const Communicator part = world.split(world.rank() < half ? 0 : 1);
+  if (world.rank() < half) {
+    auto resumed = suspension(part);
+    coupling::read_checkpoint(file, *resumed, "mpi test");
+    advance(*resumed, kAfter);
+    const auto state = state_of(*resumed);
+    if (world.is_root()) {
+      auto uninterrupted = suspension(Communicator::self());
+      advance(*uninterrupted, kBefore + kAfter);
+      EXPECT_EQ(differing(state, state_of(*uninterrupted)), 0u)
+          << "written on " << world.size() << ", resumed on " << half;
+    }
+  }
+  world.barrier();
+  io::set_process_writes_files(true);
+  if (world.is_root()) std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace rbcsim::parallel::coupled_mpi
