@@ -266,6 +266,7 @@ std::optional<nlohmann::ordered_json> finished_release(const std::filesystem::pa
 void run_capillary_command(const CapillaryOptions& options) {
   const auto request = capillary_request(options);
   const auto config = config::resolve_config(request);
+  setup::require_runs_across_processes(config, /*curved_walls=*/true);
   if (wants_suspension(config)) {
     run_suspension_command(request, config, options.common, options.checkpoint);
     return;
@@ -411,7 +412,7 @@ void attach_capillary(CLI::App& application) {
   command->callback([options] { run_capillary_command(*options); });
 }
 
-const bool registered = register_command({"capillary", 50, attach_capillary});
+const bool registered = register_command({"capillary", 50, attach_capillary, true});
 
 }  // namespace
 }  // namespace rbcsim::cli::capillary_command

@@ -26,7 +26,6 @@
 #include "io/csv_table.hpp"
 #include "io/pvd_collection.hpp"
 #include "membrane/membrane_model.hpp"
-#include "parallel/communicator.hpp"
 #include "run_directory.hpp"
 #include "setup/cell_from_config.hpp"
 #include "setup/coupling_from_config.hpp"
@@ -218,26 +217,10 @@ std::vector<cases::ShearPoint> ended_points(const std::vector<cases::ShearPoint>
   return ended;
 }
 
-// Under mpirun: what shear does not run across processes yet stops here, before any output.
-void require_shear_runs_across_processes(const config::Config& config) {
-  if (parallel::Communicator::world().size() == 1) return;
-  if (wants_sheared_suspension(config)) {
-    throw InputError("suspension.hematocrit",
-                     "a sheared suspension (between moving walls) does not run across processes "
-                     "yet: run on one process (without mpirun)");
-  }
-  if (config.string("shear.boundary") != "lees-edwards") {
-    throw InputError("shear.boundary",
-                     "moving walls do not run across processes yet: use lees-edwards or run on "
-                     "one process (without mpirun)");
-  }
-  setup::require_runs_across_processes(config);
-}
-
 void run_shear_command(const ShearOptions& options) {
   const auto request = shear_request(options);
   const auto config = config::resolve_config(request);
-  require_shear_runs_across_processes(config);
+  setup::require_runs_across_processes(config);
   if (wants_sheared_suspension(config)) {
     run_sheared_suspension_command(request, config, options.common, options.checkpoint);
     return;

@@ -23,8 +23,8 @@ void refuse_on_several_processes(CLI::App& command, int processes) {
     throw rbcsim::InputError(
         "rbcsim " + name,
         "runs on one process only, not yet under mpirun (" + std::to_string(processes) +
-            " processes started); `rbcsim shear`, `rbcsim stretch --mode fluid` and "
-            "`rbcsim bench --ranks` do");
+            " processes started); shear, stretch --mode fluid, capillary and bench --ranks "
+            "do");
   });
 }
 

@@ -74,17 +74,17 @@ lattice::FluidParameters distributable(lattice::FluidParameters parameters) {
   return parameters;
 }
 
-// The resting walls of an undivided solver, refusing every other boundary; none without walls.
-WallPredicate resting_walls_of(const lattice::FluidSolver& whole) {
-  const lattice::BoundaryMap& boundaries = whole.boundaries();
-  const char* other = boundaries.has_moving_walls()       ? "moving walls or velocity inlets"
-                      : boundaries.has_pressure_outlets() ? "pressure outlets"
-                      : boundaries.has_wall_fractions()   ? "curved wall links"
-                                                          : nullptr;
-  if (other != nullptr) {
-    throw InputError("processes", std::string(other) +
-                                      " do not run on the distributed lattice yet: run on one "
-                                      "process (without mpirun)");
+// The nodes of an undivided solver that are not fluid (walls, velocity inlets, pressure outlets),
+// none without any. Every rule but the interpolated walls' is the boundary node's own business;
+// those read the node behind, which may sit in a ghost plane the crossing populations leave
+// stale, so curved wall links are refused unless the rule ignores them (half-way).
+WallPredicate solid_nodes_of(const lattice::FluidSolver& whole) {
+  const std::string& rule = whole.parameters().wall_rule;
+  if (whole.boundaries().has_wall_fractions() && rule != "halfway") {
+    throw InputError("lattice.wall_rule",
+                     rule +
+                         " (curved wall links) does not run on the distributed lattice yet: use "
+                         "halfway or run on one process (without mpirun)");
   }
   const auto& kinds = whole.solid_mask();
   if (std::ranges::none_of(kinds, [](std::uint8_t kind) { return kind != 0; })) return {};
@@ -98,7 +98,26 @@ WallPredicate resting_walls_of(const lattice::FluidSolver& whole) {
 DistributedFluid::DistributedFluid(Communicator communicator, const lattice::FluidSolver& whole,
                                    int block_planes)
     : DistributedFluid(std::move(communicator), whole.grid(), block_planes, whole.parameters(),
-                       resting_walls_of(whole)) {
+                       solid_nodes_of(whole)) {
+  // The constructor made every solid node a resting wall; the moving ones and the outlets, with
+  // their velocities and densities, as the undivided solver has them.
+  const lattice::BoundaryMap& boundaries = whole.boundaries();
+  const lattice::LatticeGrid& grid = local_.grid();
+  for (int z = 0; z < grid.nz(); ++z) {
+    const int global_z = lattice::LatticeGrid::wrap(z_begin() - kHaloPlanes + z, global_.nz());
+    for (int y = 0; y < grid.ny(); ++y) {
+      for (int x = 0; x < grid.nx(); ++x) {
+        const std::size_t node = global_.index(x, y, global_z);
+        const std::size_t here = grid.index(x, y, z);
+        if (boundaries.kind(node) == lattice::NodeKind::pressure_outlet) {
+          local_.set_pressure_outlet(here, boundaries.outlet_density(node));
+        } else if (boundaries.kind(node) == lattice::NodeKind::wall) {
+          const auto velocity = boundaries.wall_velocity(node);
+          if (velocity != std::array<double, 3>{0.0, 0.0, 0.0}) local_.set_wall(here, velocity);
+        }
+      }
+    }
+  }
   StateArchive state("the undivided fluid");
   whole.save_state(state);
   restore_state(state);

@@ -26,8 +26,9 @@
 // The lattice is periodic in z, as FluidSolver's is: the lowest slab's lower neighbour is the
 // highest slab. Checkpoints take the undivided solver's form (save_state), so they do not depend on
 // the process count; they pass through rank 0 whole (MPI counts are ints: at most 2^31 - 1
-// values, some 113 million nodes, refused beyond). Not distributed yet: a viscosity contrast,
-// inlets and outlets, moving walls, interpolated wall links (refused with InputError). Densities
+// values, some 113 million nodes, refused beyond). Moving walls, velocity inlets and pressure
+// outlets come with an undivided solver cut into slabs (its constructor). Not distributed yet: a
+// viscosity contrast, interpolated wall links (refused with InputError). Densities
 // and velocities are the slab's own; the ghost planes' are not kept (distributed_ibm.hpp exchanges
 // the velocities it needs).
 #pragma once
@@ -80,10 +81,10 @@ class DistributedFluid {
                    lattice::FluidParameters parameters, const WallPredicate& is_wall = {},
                    HaloScheme scheme = HaloScheme::automatic);
   // The undivided solver `whole` (the same on every process, collective) cut into slabs: its
-  // lattice, parameters, resting walls and state (populations, moments, step count), so that a
-  // case set up for one process runs on many. Throws rbcsim::InputError on every process for a
-  // boundary not distributed yet (moving walls and velocity inlets, pressure outlets, curved
-  // wall links) and as the constructor above.
+  // lattice, parameters, boundaries (walls resting or moving, velocity inlets, pressure outlets)
+  // and state (populations, moments, step count), so that a case set up for one process runs on
+  // many. Throws rbcsim::InputError on every process for curved wall links under an interpolated
+  // wall rule (not distributed yet) and as the constructor above.
   DistributedFluid(Communicator communicator, const lattice::FluidSolver& whole, int block_planes);
   HaloScheme halo_scheme() const { return scheme_; }
 

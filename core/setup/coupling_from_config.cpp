@@ -52,8 +52,14 @@ coupling::CouplingParameters coupling_parameters_from(const config::Config& conf
   return parameters;
 }
 
-void require_runs_across_processes(const config::Config& config) {
+void require_runs_across_processes(const config::Config& config, bool curved_walls) {
   if (parallel::Communicator::world().size() == 1) return;
+  if (curved_walls && config.string("lattice.wall_rule") != "halfway") {
+    throw InputError("lattice.wall_rule",
+                     config.string("lattice.wall_rule") +
+                         " (curved wall links) does not run across processes yet: use halfway or "
+                         "run on one process (without mpirun)");
+  }
   if (config.number("physics.cytoplasm_viscosity_ratio") != 1.0) {
     throw InputError("physics.cytoplasm_viscosity_ratio",
                      "a viscosity contrast does not run across processes yet: set it to 1 or run "

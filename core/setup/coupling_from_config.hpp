@@ -24,9 +24,10 @@ coupling::CouplingParameters coupling_parameters_from(const config::Config& conf
 
 // Under mpirun with several processes: InputError naming the first setting of `config` the
 // distributed lattice does not run yet (physics.cytoplasm_viscosity_ratio other than 1, membrane
-// viscosity in membrane.forces), so that a command stops before it writes anything. The
-// simulation checks again (CoupledSimulation), with the case's geometry (walls, inlets) too.
-void require_runs_across_processes(const config::Config& config);
+// viscosity in membrane.forces, and for a case with curved walls an interpolated
+// lattice.wall_rule), so that a command stops before it writes anything. The simulation checks
+// again (CoupledSimulation), with the case's geometry.
+void require_runs_across_processes(const config::Config& config, bool curved_walls = false);
 
 // Snapshot intervals in steps: each output.*_interval_s rounded to the nearest whole number of
 // steps (at least one); 0 stays 0 (no snapshots).

@@ -1,75 +1,95 @@
 #!/bin/sh
-# `rbcsim shear` on one process and under mpiexec on 2, 3 and 4 (blocks of 2 planes for 4): every
-# file of the run directory but the wall times is the same byte for byte, the result is printed
-# once, and each run exits 0; the same for `rbcsim stretch --mode fluid` on 2. Settings not
-# distributed yet stop with exit 2 before any output.
+# The experiment commands under mpiexec against one process: every file of the run directory is
+# the same byte for byte, except the wall times (result.json, config.json's start time, a shear
+# rate's point.json, the wall_time_s column of a CSV table); the result is printed once; each run
+# exits 0. Settings not distributed yet stop with exit 2, one line, before any output.
 # Usage: commands_on_processes.sh MPIEXEC RBCSIM
 set -u
 mpiexec=$1
 rbcsim=$2
-run="shear --set mesh.subdivisions=3 --set mesh.method=parametric --set lattice.spacing_um=1
-  --set shear.max_reynolds_number=0.4 --set shear.width_diameters=1.6 --set shear.gap_diameters=2
-  --max-strain 1 --rates 0,500 --threads 1 --json"
 failed=0
 work=$(mktemp -d) || exit 1
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
-# shellcheck disable=SC2086
-"$rbcsim" $run --output one >one.json 2>one.err || { cat one.err; exit 1; }
-for processes in 2 3 4; do
-  extra=""
-  [ "$processes" -eq 4 ] && extra="--set lattice.block_planes=2"
-  # shellcheck disable=SC2086
-  "$mpiexec" -n "$processes" --oversubscribe "$rbcsim" $run $extra --output "on$processes" \
-    >"on$processes.json" 2>"on$processes.err"
-  code=$?
-  if [ $code -ne 0 ]; then
-    echo "on $processes processes: exit $code"; cat "on$processes.err"; failed=1; continue
-  fi
-  printed=$(grep -c '"command": "shear"' "on$processes.json")
-  [ "$printed" -eq 1 ] || { echo "on $processes processes: the result printed $printed times"; failed=1; }
-  for file in shear.csv shear.pvd shapes/shear_000.vtp shapes/shear_001.vtp \
-              rate_000/history.csv rate_001/history.csv; do
-    cmp -s "one/$file" "on$processes/$file" ||
-      { echo "on $processes processes: $file differs from one process's"; failed=1; }
-  done
-done
-# stretch --mode fluid on 2 processes: the flow field gathered from the slabs (fluid.vti), the
-# shapes and the curve but its wall times, byte for byte.
-stretch="stretch --set mesh.subdivisions=2 --set mesh.method=parametric --set lattice.spacing_um=1
-  --set stretch.fluid.kinematic_viscosity_m2_per_s=3.7e-7 --set stretch.fluid.steady_relative_rate_per_s=20
-  --mode fluid --forces 10 --threads 1 --set lattice.block_planes=2"
+
 without_wall_time() {
   awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "wall_time_s") skip = i }
            { line = ""; for (i = 1; i <= NF; i++) if (i != skip) line = line $i ","; print line }' "$1"
 }
-# shellcheck disable=SC2086
-"$rbcsim" $stretch --output stretch1 >/dev/null 2>stretch1.err || { cat stretch1.err; exit 1; }
-# shellcheck disable=SC2086
-if "$mpiexec" -n 2 --oversubscribe "$rbcsim" $stretch --output stretch2 >/dev/null 2>stretch2.err; then
-  for file in fluid.vti stretch.pvd shapes/stretch_000.vtp; do
-    cmp -s "stretch1/$file" "stretch2/$file" ||
-      { echo "stretch on 2 processes: $file differs from one process's"; failed=1; }
+
+# same_as_one NAME "PROCESS COUNTS" COMMAND...: the command on one process, then on each count.
+same_as_one() {
+  name=$1
+  counts=$2
+  shift 2
+  "$rbcsim" "$@" --threads 1 --json --output "$name.1" >"$name.1.json" 2>"$name.1.err" ||
+    { echo "$name on one process failed:"; cat "$name.1.err"; failed=1; return; }
+  for processes in $counts; do
+    out="$name.$processes"
+    if ! "$mpiexec" -n "$processes" --oversubscribe "$rbcsim" "$@" --threads 1 --json \
+        --output "$out" >"$out.json" 2>"$out.err"; then
+      echo "$name on $processes processes failed:"; cat "$out.err"; failed=1; continue
+    fi
+    # Printed once, by rank 0: as many lines as one process prints.
+    [ "$(wc -l <"$out.json")" -eq "$(wc -l <"$name.1.json")" ] ||
+      { echo "$name on $processes processes: printed $(wc -l <"$out.json") lines"; failed=1; }
+    files=$(cd "$name.1" && find . -type f ! -name result.json ! -name config.json ! -name point.json | sort)
+    [ -n "$files" ] || { echo "$name: no files to compare"; failed=1; }
+    for file in $files; do
+      case $file in
+        *.csv) [ "$(without_wall_time "$name.1/$file")" = "$(without_wall_time "$out/$file")" ] ;;
+        *) cmp -s "$name.1/$file" "$out/$file" ;;
+      esac || { echo "$name on $processes processes: $file differs from one process's"; failed=1; }
+    done
   done
-  [ "$(without_wall_time stretch1/stretch.csv)" = "$(without_wall_time stretch2/stretch.csv)" ] ||
-    { echo "stretch on 2 processes: stretch.csv differs beyond its wall times"; failed=1; }
-else
-  echo "stretch on 2 processes failed"; cat stretch2.err; failed=1
-fi
+}
+
+coarse_cell="--set mesh.subdivisions=3 --set mesh.method=parametric --set lattice.spacing_um=1"
+# shellcheck disable=SC2086
+same_as_one shear "2 3 4" shear $coarse_cell --set shear.max_reynolds_number=0.4 \
+  --set shear.width_diameters=1.6 --set shear.gap_diameters=2 --max-strain 1 --rates 0,500 \
+  --set lattice.block_planes=2
+same_as_one stretch "2" stretch --set mesh.subdivisions=2 --set mesh.method=parametric \
+  --set lattice.spacing_um=1 --set stretch.fluid.kinematic_viscosity_m2_per_s=3.7e-7 \
+  --set stretch.fluid.steady_relative_rate_per_s=20 --mode fluid --forces 10 \
+  --set lattice.block_planes=2
+# The capillary's cell of tests/cli_capillary (162 vertices, stiffened), inlet, outlet and walls.
+same_as_one capillary "2 3 4" capillary --set mesh.subdivisions=2 --set mesh.method=parametric \
+  --set lattice.spacing_um=1 --set membrane.k_link_kBT=112 --set membrane.k_area_kBT=80 \
+  --set membrane.k_bend_kBT=800 --set membrane.k_volume_kBT=320 \
+  --set membrane.k_area_difference_kBT=4800 --set membrane.k_total_curvature_kBT=1600 \
+  --set membrane.vertex_force_cap_pN=2000 --set capillary.throat_diameter_um=9 \
+  --set capillary.inlet_velocity_m_per_s=0.014 --set capillary.pass_margin_um=2 \
+  --set output.membrane_interval_s=2e-4 --set output.fluid_interval_s=1e-3 \
+  --set lattice.block_planes=2
+suspension="--set mesh.subdivisions=2 --set mesh.method=parametric --set lattice.spacing_um=1
+  --set suspension.contact_range_um=1.75 --set lattice.block_planes=2"
+# shellcheck disable=SC2086
+same_as_one sheared_suspension "2" shear $suspension --hematocrit 0.1 --rates 200 \
+  --set suspension.strain=1
+# shellcheck disable=SC2086
+same_as_one tube_suspension "2" capillary --geometry tube --diameter-um 10 --length-um 12 \
+  $suspension --set suspension.duration_s=2e-4 --set suspension.sample_interval_s=2e-5 \
+  --set output.membrane_interval_s=1e-4 --set output.fluid_interval_s=1e-4 --hematocrit 0.2 \
+  --mix discocyte=0.5,stomatocyte-II=0.5
 
 # What does not run across processes yet: exit 2, one line naming the setting, no run directory.
-for setting in "--preset physiological" "--boundary walls" "--hematocrit 0.2" "--mode quasi-static"; do
-  # shellcheck disable=SC2086
-  command=$run
-  [ "$setting" = "--mode quasi-static" ] && command="stretch --set mesh.subdivisions=2"
-  "$mpiexec" -n 2 --oversubscribe "$rbcsim" $command $setting --output refused >/dev/null 2>refused.err
+refused() {
+  "$mpiexec" -n 2 --oversubscribe "$rbcsim" "$@" --output refused >/dev/null 2>refused.err
   code=$?
   lines=$(grep -c "rbcsim: error: " refused.err)
   if [ $code -ne 2 ] || [ "$lines" -ne 1 ] || [ -e refused ]; then
-    echo "$setting on 2 processes: exit $code, $lines error line(s), run directory left: $(ls refused 2>&1)"
+    echo "$* on 2 processes: exit $code, $lines error line(s), run directory left: $(ls refused 2>&1)"
     cat refused.err; failed=1
   fi
-done
-[ $failed -eq 0 ] &&
-  echo "shear: the same files on 1-4 processes, stretch --mode fluid on 2; the rest refused"
+  rm -rf refused
+}
+# shellcheck disable=SC2086
+refused shear $coarse_cell --preset physiological
+refused stretch --set mesh.subdivisions=2 --mode quasi-static
+refused capillary --set mesh.subdivisions=2 --set lattice.wall_rule=bouzidi
+refused calibrate
+
+[ $failed -eq 0 ] && echo "shear, stretch --mode fluid, capillary and both suspensions: the same" \
+  "files as one process; settings not distributed yet refused"
 exit $failed
