@@ -355,7 +355,7 @@ void CoupledSimulation::advance_cells() {
     for (const Cell& cell : cells_) sources.push_back({&cell.stencil(), cell.positions_lu()});
     std::vector<std::vector<Vec3>> velocities;
     try {
-      velocities = parallel::interpolate_on_slabs(sources, *distributed_);
+      velocities = parallel::interpolate_on_slabs(sources, *kernel_, *distributed_);
     } catch (const RuntimeFailure& failure) {
       fail(std::nullopt, failure.what());
     }

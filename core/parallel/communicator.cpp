@@ -143,6 +143,26 @@ std::vector<double> Communicator::gather_to_root(std::span<const double> values)
   return gathered;
 }
 
+std::vector<double> Communicator::gather_to_all(std::span<const double> values) const {
+  if (!handle_) return {values.begin(), values.end()};
+  const int count = mpi_count(values.size(), "a gather");
+  std::vector<int> counts(static_cast<std::size_t>(size_));
+  check_mpi(MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, handle_->comm),
+            "MPI_Allgather");
+  std::vector<int> offsets(counts.size(), 0);
+  std::size_t total = 0;
+  for (std::size_t r = 0; r < counts.size(); ++r) {
+    offsets[r] = mpi_count(total, "a gather");
+    total += static_cast<std::size_t>(counts[r]);
+  }
+  mpi_count(total, "a gather");
+  std::vector<double> gathered(total);
+  check_mpi(MPI_Allgatherv(values.data(), count, MPI_DOUBLE, gathered.data(), counts.data(),
+                           offsets.data(), MPI_DOUBLE, handle_->comm),
+            "MPI_Allgatherv");
+  return gathered;
+}
+
 std::vector<double> Communicator::scatter_from_root(
     const std::vector<std::vector<double>>& per_rank, std::size_t count) const {
   if (!handle_) {
@@ -248,6 +268,9 @@ void Communicator::send_receive(std::span<const double> send, int /*destination*
 }
 
 std::vector<double> Communicator::gather_to_root(std::span<const double> values) const {
+  return {values.begin(), values.end()};
+}
+std::vector<double> Communicator::gather_to_all(std::span<const double> values) const {
   return {values.begin(), values.end()};
 }
 std::vector<double> Communicator::scatter_from_root(

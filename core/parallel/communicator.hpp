@@ -58,6 +58,8 @@ class Communicator {
                     int source, int tag) const;
   // Rank 0: every rank's values concatenated in rank order; other ranks: empty.
   std::vector<double> gather_to_root(std::span<const double> values) const;
+  // Every rank: every rank's values concatenated in rank order (copies, one collective).
+  std::vector<double> gather_to_all(std::span<const double> values) const;
   // Rank 0 gives per_rank[r] (ignored elsewhere) to rank r, which expects `count` values. Throws
   // rbcsim::RuntimeFailure when a count disagrees.
   std::vector<double> scatter_from_root(const std::vector<std::vector<double>>& per_rank,

@@ -36,25 +36,37 @@ bool interpolates_here(const DistributedFluid& fluid, const Vec3& position_lu) {
   return plane >= fluid.z_begin() && plane < fluid.z_end();
 }
 
-// The velocity at any node within the ghost reach of this slab: the slab's own, or (collective,
-// at construction) the neighbours' boundary planes, exchanged into a copy of the ghost planes.
+// The planes a stencil reaches below and above the plane floor(z) of its point: its nodes run
+// from floor(z - w/2) + 1 (ibm/delta_kernels.hpp), w the kernel's support width.
+int planes_below(const ibm::DeltaKernel& kernel) { return (kernel.support_width + 1) / 2 - 1; }
+int planes_above(const ibm::DeltaKernel& kernel) { return (kernel.support_width + 1) / 2; }
+
+// The velocity at any node the stencils of this slab's points reach: the slab's own, or
+// (collective, at construction) the planes of the neighbours next to it, as many as the kernel
+// reaches.
 class SlabVelocities {
  public:
-  explicit SlabVelocities(const DistributedFluid& fluid)
+  SlabVelocities(const DistributedFluid& fluid, int below, int above)
       : fluid_(fluid),
         velocity_(fluid.local().velocity()),
         plane_size_(plane_size_of(fluid.global_grid())),
-        slab_(fluid.z_end() - fluid.z_begin()) {
+        slab_(fluid.z_end() - fluid.z_begin()),
+        below_(below),
+        above_(above) {
     const Communicator& communicator = fluid.communicator();
     const int ranks = communicator.size();
     const int upper = (communicator.rank() + 1) % ranks;
     const int lower = (communicator.rank() + ranks - 1) % ranks;
-    const std::vector<double> top = pack(slab_);  // the slab's highest planes
-    lower_ghost_.resize(top.size());
-    communicator.send_receive(top, upper, lower_ghost_, lower, kVelocityUpTag);
-    const std::vector<double> bottom = pack(kHaloPlanes);
-    upper_ghost_.resize(bottom.size());
-    communicator.send_receive(bottom, lower, upper_ghost_, upper, kVelocityDownTag);
+    if (below_ > 0) {  // the slab's highest planes go up, the lower neighbour's come in
+      const std::vector<double> top = pack(kHaloPlanes + slab_ - below_, below_);
+      lower_ghost_.resize(top.size());
+      communicator.send_receive(top, upper, lower_ghost_, lower, kVelocityUpTag);
+    }
+    if (above_ > 0) {  // the slab's lowest planes go down, the upper neighbour's come in
+      const std::vector<double> bottom = pack(kHaloPlanes, above_);
+      upper_ghost_.resize(bottom.size());
+      communicator.send_receive(bottom, lower, upper_ghost_, upper, kVelocityDownTag);
+    }
   }
 
   Vec3 at(std::size_t node) const {
@@ -69,26 +81,26 @@ class SlabVelocities {
       const std::size_t local = in_plane + (offset + kHaloPlanes) * plane_size_;
       return Vec3(velocity_[0][local], velocity_[1][local], velocity_[2][local]);
     }
-    const bool below = offset < 0;
-    const std::vector<double>& ghost = below ? lower_ghost_ : upper_ghost_;
-    const int ghost_plane = below ? offset + kHaloPlanes : offset - slab_;
-    if (ghost_plane < 0 || ghost_plane >= kHaloPlanes) {
-      throw std::logic_error("parallel: a stencil node beyond the ghost planes");
+    const bool is_below = offset < 0;
+    const std::vector<double>& ghost = is_below ? lower_ghost_ : upper_ghost_;
+    const int planes = is_below ? below_ : above_;
+    const int ghost_plane = is_below ? offset + below_ : offset - slab_;
+    if (ghost_plane < 0 || ghost_plane >= planes) {
+      throw std::logic_error("parallel: a stencil node beyond the planes its kernel reaches");
     }
     const std::size_t at = in_plane + ghost_plane * plane_size_;
-    const std::size_t component = kHaloPlanes * plane_size_;
+    const std::size_t component = static_cast<std::size_t>(planes) * plane_size_;
     return Vec3(ghost[at], ghost[component + at], ghost[2 * component + at]);
   }
 
  private:
-  // kHaloPlanes planes of velocity from local plane first_local_z, each component after the other.
-  std::vector<double> pack(int first_local_z) const {
+  // `planes` planes of velocity from local plane first_local_z, each component after the other.
+  std::vector<double> pack(int first_local_z, int planes) const {
     std::vector<double> values;
     for (int axis = 0; axis < 3; ++axis) {
       const auto begin =
           velocity_[axis].begin() + static_cast<std::ptrdiff_t>(first_local_z * plane_size_);
-      values.insert(values.end(), begin,
-                    begin + static_cast<std::ptrdiff_t>(kHaloPlanes * plane_size_));
+      values.insert(values.end(), begin, begin + static_cast<std::ptrdiff_t>(planes * plane_size_));
     }
     return values;
   }
@@ -97,7 +109,9 @@ class SlabVelocities {
   const lattice::VectorField& velocity_;
   std::size_t plane_size_;
   int slab_;
-  std::vector<double> lower_ghost_;  // the ghost planes below the slab, x, y, z one after other
+  int below_;
+  int above_;
+  std::vector<double> lower_ghost_;  // the planes below the slab, x, y, z one after the other
   std::vector<double> upper_ghost_;
 };
 
@@ -142,9 +156,11 @@ void spread_onto_slab(std::span<const ibm::SpreadSource> sources, DistributedFlu
 }
 
 std::vector<std::vector<Vec3>> interpolate_on_slabs(std::span<const InterpolationSource> sources,
+                                                    const ibm::DeltaKernel& kernel,
                                                     const DistributedFluid& fluid) {
-  const SlabVelocities velocity(fluid);
-  std::vector<std::size_t> first_of_source(sources.size() + 1, 0);
+  require_within_ghost_planes(kernel);
+  const SlabVelocities velocity(fluid, planes_below(kernel), planes_above(kernel));
+  std::size_t total_points = 0;
   std::vector<double> mine;
   for (std::size_t s = 0; s < sources.size(); ++s) {
     const ibm::InterpolationStencil& stencil = *sources[s].stencil;
@@ -153,7 +169,7 @@ std::vector<std::vector<Vec3>> interpolate_on_slabs(std::span<const Interpolatio
                                   " positions for " + std::to_string(stencil.point_count()) +
                                   " points");
     }
-    first_of_source[s + 1] = first_of_source[s] + stencil.point_count();
+    total_points += stencil.point_count();
     for (std::size_t point = 0; point < stencil.point_count(); ++point) {
       if (!interpolates_here(fluid, sources[s].positions_lu[point])) continue;
       const auto nodes = stencil.nodes(point);
@@ -166,35 +182,19 @@ std::vector<std::vector<Vec3>> interpolate_on_slabs(std::span<const Interpolatio
                   {static_cast<double>(s), static_cast<double>(point), u.x(), u.y(), u.z()});
     }
   }
-  // Copies, no sums: rank 0 puts every point's velocity in place and hands the lists to all.
-  const Communicator& communicator = fluid.communicator();
-  const std::vector<double> gathered = communicator.gather_to_root(mine);
-  const std::size_t total_points = first_of_source.back();
-  std::vector<double> flat(3 * total_points, 0.0);
-  std::string problem;
-  if (communicator.is_root()) {
-    if (gathered.size() != kValuesPerPoint * total_points) {
-      problem = "parallel: " + std::to_string(gathered.size() / kValuesPerPoint) + " of " +
-                std::to_string(total_points) + " points interpolated";
-    }
-    for (std::size_t k = 0; k + kValuesPerPoint <= gathered.size(); k += kValuesPerPoint) {
-      const std::size_t at = first_of_source[static_cast<std::size_t>(gathered[k])] +
-                             static_cast<std::size_t>(gathered[k + 1]);
-      for (std::size_t axis = 0; axis < 3; ++axis) flat[3 * at + axis] = gathered[k + 2 + axis];
-    }
+  // Copies, no sums: every process puts every point's velocity in place.
+  const std::vector<double> gathered = fluid.communicator().gather_to_all(mine);
+  if (gathered.size() != kValuesPerPoint * total_points) {  // the same on every process
+    throw RuntimeFailure("parallel: " + std::to_string(gathered.size() / kValuesPerPoint) + " of " +
+                         std::to_string(total_points) + " points interpolated");
   }
-  if (communicator.any(!problem.empty())) {
-    throw RuntimeFailure(problem.empty() ? "parallel: a point was not interpolated (see rank 0)"
-                                         : problem);
-  }
-  communicator.broadcast_from_root(flat);
   std::vector<std::vector<Vec3>> velocities(sources.size());
   for (std::size_t s = 0; s < sources.size(); ++s) {
-    auto& of_source = velocities[s];
-    of_source.reserve(first_of_source[s + 1] - first_of_source[s]);
-    for (std::size_t at = first_of_source[s]; at < first_of_source[s + 1]; ++at) {
-      of_source.emplace_back(flat[3 * at], flat[3 * at + 1], flat[3 * at + 2]);
-    }
+    velocities[s].assign(sources[s].stencil->point_count(), Vec3::Zero());
+  }
+  for (std::size_t k = 0; k < gathered.size(); k += kValuesPerPoint) {
+    velocities[static_cast<std::size_t>(gathered[k])][static_cast<std::size_t>(gathered[k + 1])] =
+        Vec3(gathered[k + 2], gathered[k + 3], gathered[k + 4]);
   }
   return velocities;
 }
@@ -233,7 +233,7 @@ void DistributedImmersedBoundary::spread(std::span<const Vec3> forces_lu,
 
 std::vector<Vec3> DistributedImmersedBoundary::interpolate(const DistributedFluid& fluid) const {
   const InterpolationSource source{&stencil_, positions_lu_};
-  return std::move(interpolate_on_slabs(std::span(&source, 1), fluid).front());
+  return std::move(interpolate_on_slabs(std::span(&source, 1), kernel_, fluid).front());
 }
 
 }  // namespace rbcsim::parallel

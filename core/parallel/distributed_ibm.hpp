@@ -42,9 +42,12 @@ struct InterpolationSource {
 
 // Collective: the fluid velocity at every point of every source (lattice units), the same on
 // every process. The process holding plane floor(z) of a point interpolates it, slot by slot as
-// ibm::interpolate_velocity; rank 0 collects the copies and hands them to all. Throws
-// RuntimeFailure on every process if a point was not interpolated.
+// ibm::interpolate_velocity, from its planes and the neighbours' planes `kernel` (the stencils')
+// reaches, sent to it for this; the copies then go to every process in one collective. Throws
+// RuntimeFailure on every process if a point was not interpolated, std::logic_error for a kernel
+// wider than the ghost planes.
 std::vector<std::vector<Vec3>> interpolate_on_slabs(std::span<const InterpolationSource> sources,
+                                                    const ibm::DeltaKernel& kernel,
                                                     const DistributedFluid& fluid);
 
 // One point set with its own stencil (rbcsim bench --ranks, tests).
