@@ -48,6 +48,47 @@ void Cell::compute_membrane_forces(const LatticeFrame& frame, membrane::ForceDet
   for (Vec3& force : external_forces_pN_) force.setZero();
 }
 
+namespace {
+
+constexpr std::size_t kForceHeaderValues = 5;     // capped count, four deviations
+constexpr std::size_t kForceValuesPerVertex = 6;  // membrane total, external
+
+}  // namespace
+
+void Cell::append_forces(std::vector<double>& values) const {
+  const auto& deviations = membrane_forces_.cell;
+  values.insert(values.end(),
+                {static_cast<double>(membrane_forces_.capped_vertex_count), deviations.volume,
+                 deviations.total_area, deviations.area_difference, deviations.total_curvature});
+  for (std::size_t v = 0; v < vertex_count(); ++v) {
+    const Vec3& total = membrane_forces_.total_pN[v];
+    const Vec3& external = external_forces_pN_[v];
+    values.insert(values.end(),
+                  {total.x(), total.y(), total.z(), external.x(), external.y(), external.z()});
+  }
+}
+
+std::span<const double> Cell::adopt_forces(std::span<const double> values,
+                                           const LatticeFrame& frame) {
+  const std::size_t count = kForceHeaderValues + kForceValuesPerVertex * vertex_count();
+  if (values.size() < count) {
+    throw std::invalid_argument("Cell::adopt_forces: " + std::to_string(values.size()) +
+                                " values for " + std::to_string(count));
+  }
+  for (std::size_t v = 0; v < positions_lu_.size(); ++v) {
+    positions_um_[v] = frame.to_um(positions_lu_[v]);
+  }
+  membrane_forces_.capped_vertex_count = static_cast<std::size_t>(values[0]);
+  membrane_forces_.cell = {values[1], values[2], values[3], values[4]};
+  membrane::drop_term_detail(membrane_forces_);
+  const double* at = values.data() + kForceHeaderValues;
+  for (std::size_t v = 0; v < vertex_count(); ++v, at += kForceValuesPerVertex) {
+    membrane_forces_.total_pN[v] = Vec3(at[0], at[1], at[2]);
+    external_forces_pN_[v] = Vec3(at[3], at[4], at[5]);
+  }
+  return values.subspan(count);
+}
+
 void Cell::add_term_forces(const LatticeFrame& frame) {
   const auto& terms = membrane_forces_.terms;
   if (terms.empty() || terms.front().forces_pN.size() == vertex_count()) return;

@@ -78,6 +78,13 @@ class Cell {
   // include (the step exchanged it with the fluid implicitly, not through the spread).
   void add_term_forces(const LatticeFrame& frame);
   std::span<Vec3> external_forces_pN() { return external_forces_pN_; }
+  // Phase 1's results as values, for the copies of this cell on other processes (the coupled loop
+  // across processes): the membrane's totals, capped count and deviations, and the external
+  // forces. append_forces adds them to `values`; adopt_forces reads them from `values` (as
+  // compute_membrane_forces and the hooks would have left them, the terms' detail dropped) and
+  // returns what follows. Throws std::invalid_argument for values too short.
+  void append_forces(std::vector<double>& values) const;
+  std::span<const double> adopt_forces(std::span<const double> values, const LatticeFrame& frame);
   // Phase 2: total = membrane + external, in lattice force units, and the stencil of this step,
   // built once and used by the spread and the interpolation. Throws RuntimeFailure for a
   // non-finite total force, or from the stencil (a vertex with no fluid node in reach).

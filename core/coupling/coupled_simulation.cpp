@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <exception>
 #include <stdexcept>
 
@@ -259,14 +260,15 @@ std::vector<std::size_t> CoupledSimulation::capped_steps_per_cell() const {
 }
 
 template <class Body>
-void CoupledSimulation::for_each_cell(const Body& body) {
-  const auto count = static_cast<std::ptrdiff_t>(cells_.size());
-  std::vector<std::exception_ptr> failures(cells_.size());
-  const auto run_cell = [&body, &failures](std::ptrdiff_t k) {
+std::vector<std::exception_ptr> CoupledSimulation::run_on_cells(
+    std::span<const std::size_t> indices, const Body& body) {
+  const auto count = static_cast<std::ptrdiff_t>(indices.size());
+  std::vector<std::exception_ptr> failures(indices.size());
+  const auto run_cell = [&body, &failures, indices](std::ptrdiff_t i) {
     try {
-      body(static_cast<std::size_t>(k));
+      body(indices[static_cast<std::size_t>(i)]);
     } catch (...) {
-      failures[static_cast<std::size_t>(k)] = std::current_exception();
+      failures[static_cast<std::size_t>(i)] = std::current_exception();
     }
   };
   // Several cells: one region over the cells, whose kernels then run on one thread each (their
@@ -279,8 +281,16 @@ void CoupledSimulation::for_each_cell(const Body& body) {
     run_cell(0);
   } else {
 #pragma omp parallel for schedule(dynamic, 1)
-    for (std::ptrdiff_t k = 0; k < count; ++k) run_cell(k);
+    for (std::ptrdiff_t i = 0; i < count; ++i) run_cell(i);
   }
+  return failures;
+}
+
+template <class Body>
+void CoupledSimulation::for_each_cell(const Body& body) {
+  std::vector<std::size_t> all(cells_.size());
+  for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
+  const auto failures = run_on_cells(all, body);
   for (std::size_t k = 0; k < failures.size(); ++k) {
     if (!failures[k]) continue;
     try {
@@ -291,12 +301,65 @@ void CoupledSimulation::for_each_cell(const Body& body) {
   }
 }
 
-void CoupledSimulation::spread_forces() {
-  auto start = Clock::now();
+void CoupledSimulation::compute_cell_forces() {
+  if (distributed_ && cells_.size() > 1 && compute_owned_cell_forces()) return;
+  // One process, one cell, or a failure somewhere: every cell here, so that a failure stops every
+  // process alike (the lowest-indexed failing cell, for_each_cell).
   for_each_cell([this](std::size_t k) {
     cells_[k].compute_membrane_forces(frame_);
     for (const auto& force : external_forces_) force(k, cells_[k], cells_[k].external_forces_pN());
   });
+}
+
+// The same code on the same positions gives the same forces on any process: the copies are the
+// values the owner computed, bit for bit, and the step goes on as if every process had computed
+// every cell.
+bool CoupledSimulation::compute_owned_cell_forces() {
+  const int nz = distributed_->global_grid().nz();
+  std::vector<std::size_t> owned;
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    const int plane =
+        lattice::LatticeGrid::wrap(static_cast<int>(std::floor(cells_[k].centroid_lu().z())), nz);
+    if (plane >= distributed_->z_begin() && plane < distributed_->z_end()) owned.push_back(k);
+  }
+  const auto failures = run_on_cells(owned, [this](std::size_t k) {
+    cells_[k].compute_membrane_forces(frame_);
+    for (const auto& force : external_forces_) force(k, cells_[k], cells_[k].external_forces_pN());
+  });
+  bool failed = false;
+  for (const auto& failure : failures) {
+    if (!failure) continue;
+    try {
+      std::rethrow_exception(failure);
+    } catch (const RuntimeFailure&) {
+      failed = true;  // any other exception goes on up: a bug, which stops the run
+    }
+  }
+  const parallel::Communicator& processes = parameters_.processes;
+  if (processes.any(failed)) return false;
+  std::vector<double> mine;
+  for (const std::size_t k : owned) {
+    mine.push_back(static_cast<double>(k));
+    cells_[k].append_forces(mine);
+  }
+  const std::vector<double> all = processes.gather_to_all(mine);
+  std::span<const double> rest(all);
+  std::size_t adopted = 0;
+  while (!rest.empty()) {
+    const auto k = static_cast<std::size_t>(rest.front());
+    rest = cells_.at(k).adopt_forces(rest.subspan(1), frame_);
+    ++adopted;
+  }
+  if (adopted != cells_.size()) {
+    throw std::logic_error("CoupledSimulation: the forces of " + std::to_string(adopted) + " of " +
+                           std::to_string(cells_.size()) + " cells came back");
+  }
+  return true;
+}
+
+void CoupledSimulation::spread_forces() {
+  auto start = Clock::now();
+  compute_cell_forces();
   lap(start, phase_times_.membrane_s);
   add_contact_forces();
   lap(start, phase_times_.contact_s);

@@ -29,6 +29,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <exception>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -234,6 +235,17 @@ class CoupledSimulation {
   // any other exception. Bodies may write only their own cell's state.
   template <class Body>
   void for_each_cell(const Body& body);
+  // Runs body(k) for the cells `indices` (in parallel when there are several) and returns what
+  // each threw (null for none), in the order of `indices`.
+  template <class Body>
+  std::vector<std::exception_ptr> run_on_cells(std::span<const std::size_t> indices,
+                                               const Body& body);
+  // Phase 1: every cell's membrane and external forces (the hooks).
+  void compute_cell_forces();
+  // Phase 1 across processes with several cells: each process computes the cells whose centroid
+  // lies in its planes and takes the others' as copies (cell.hpp, adopt_forces). False, having
+  // adopted nothing, if a cell failed on any process.
+  bool compute_owned_cell_forces();
   void add_contact_forces();
   void build_contact_surfaces();
   void advance_fluid();
