@@ -83,9 +83,7 @@ class ShapeRecorder {
       : run_(run),
         fingerprint_(config_fingerprint(config)),
         rate_count_(rate_count),
-        progress_(progress) {
-    std::filesystem::create_directories(run_.path() / "shapes");
-  }
+        progress_(progress) {}
 
   void operator()(std::size_t rate_index, const cases::ShearPoint& point,
                   const coupling::CoupledSimulation& simulation) {
@@ -240,16 +238,22 @@ void run_shear_command(const ShearOptions& options) {
   const auto plans = cases::plan_shear_rates(model, cell, engine, settings);
   cases::ShearHooks hooks;
   hooks.completed = completed_points(options, config, plans.size());
-  directory.start(config, cell_mesh);
+  // Started once the first rate's simulation is set up (or after the sweep if none was), so that
+  // what only the simulation can refuse (a lattice with too few blocks for the processes) leaves
+  // no run directory behind.
+  std::once_flag started;
+  const auto start = [&] { std::call_once(started, [&] { directory.start(config, cell_mesh); }); };
   const Progress progress(options.common);
   ShapeRecorder recorder(directory, config, plans.size(), progress);
   hooks.finished = std::ref(recorder);
   hooks.configure = [&](std::size_t rate_index, coupling::CoupledSimulation& simulation) {
+    start();
     wire_checkpoints_in(cases::shear_rate_directory(rate_index), simulation, options.checkpoint,
                         directory, config);
   };
   const auto all_points =
       cases::run_shear_sweep(model, cell, engine, settings, plans, directory.threads(), hooks);
+  start();
   progress.done();
   const auto points = ended_points(all_points);
   const bool interrupted = points.size() < all_points.size();

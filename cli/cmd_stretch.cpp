@@ -199,14 +199,15 @@ void run_stretch_command(const StretchOptions& options) {
 
   const RunDirectory directory("stretch", options.common, config);
   settings.fluid.output_directory = directory.path();
-  // With --resume (fluid mode only) the directory is started once the checkpoint is accepted, so
-  // a refused one leaves the run directory as it was.
+  // In fluid mode the directory is started once the simulation is set up and (with --resume) the
+  // checkpoint accepted, so that a refused one, or a lattice with too few blocks for the
+  // processes, leaves the run directory as it was.
   bool started = false;
   const auto start = [&] {
     if (!started) directory.start(config, cell_mesh);
     started = true;
   };
-  if (options.checkpoint.resume_directory.empty()) start();
+  if (settings.mode != "fluid") start();
   settings.fluid.configure = [&](coupling::CoupledSimulation& simulation) {
     wire_checkpoints(simulation, options.checkpoint, directory, config);
     start();
@@ -214,6 +215,7 @@ void run_stretch_command(const StretchOptions& options) {
   const Progress progress(options.common);
   ShapeRecorder recorder(directory, model, settings.forces_pN.size(), progress);
   const auto run = cases::run_stretch(model, cell, settings, std::ref(recorder));
+  start();
   progress.done();
 
   const auto comparison =

@@ -1,12 +1,15 @@
 // rbcsim: entry point. Maps failures onto exit codes (README.md, "Exit codes"):
 // 0 success, 1 runtime failure (instability, NaN), 2 bad input (usage, config, mesh), 130
 // interrupted by SIGINT or SIGTERM (the results so far written). Under `mpirun -np N` (a build
-// with RBCSIM_MPI) every process runs this: bad input, the same on every process, is printed once
-// by rank 0; any other failure is printed by the process it happened on, prefixed with its rank,
-// and stops every process of the run (MPI_Abort) with the same exit code.
+// with RBCSIM_MPI) every process runs this and only rank 0 prints and writes files. A failure that
+// ends the command on every process (results, checks and bad input are the same everywhere) is
+// printed once by rank 0 and every process exits with its code; a failure of some processes only
+// is printed by each, prefixed with its rank, and stops the whole run (MPI_Abort) with its code.
+#include <unistd.h>
 #include <CLI/CLI.hpp>
+
+#include <cstdio>
 #include <iostream>
-#include <streambuf>
 #include <string>
 
 #include "command_registry.hpp"
@@ -28,11 +31,9 @@ void refuse_on_several_processes(CLI::App& command, int processes) {
   });
 }
 
-// Where the output of the processes other than rank 0 goes: they compute what rank 0 does.
-class DiscardingBuffer : public std::streambuf {
- protected:
-  int overflow(int character) override { return traits_type::not_eof(character); }
-};
+// How long the processes that failed wait for the others before deciding that they failed alone:
+// rank 0 may still be writing the results the others computed too.
+constexpr double kFailureAgreementSeconds = 60.0;
 
 }  // namespace
 
@@ -45,29 +46,39 @@ int main(int argc, char** argv) {
   }
   const rbcsim::parallel::MpiSession mpi(argc, argv);
   const auto world = rbcsim::parallel::Communicator::world();
-  // Rank 0 alone prints and writes files; the others keep stderr for their own failures.
-  std::ostream error_line(std::cerr.rdbuf());
+  // Rank 0 alone prints and writes files; the others keep a copy of stderr for failures of their
+  // own (std::cout and std::cerr follow stdout and stderr: synchronised with stdio).
+  FILE* errors = stderr;
   if (!world.is_root()) {
-    // Never destroyed: the standard streams may be flushed after main returns.
-    static auto* const discarded = new DiscardingBuffer;
-    std::cout.rdbuf(discarded);
-    std::cerr.rdbuf(discarded);
+    const int copy = ::dup(STDERR_FILENO);
+    if (copy >= 0) errors = ::fdopen(copy, "w");
+    if (errors == nullptr) errors = stderr;
+    std::fflush(stdout);
+    std::fflush(stderr);
+    if (std::freopen("/dev/null", "w", stdout) == nullptr ||
+        (errors != stderr && std::freopen("/dev/null", "w", stderr) == nullptr)) {
+      std::fprintf(errors, "[rank %d] rbcsim: cannot silence this process's output\n",
+                   world.rank());
+    }
     rbcsim::io::set_process_writes_files(false);
   }
-  // Bad input: identical on every process, said once. Failures: said where they happen, and the
-  // whole run stops, so that no process waits forever for one that has left.
-  const auto bad_input = [&world, &error_line](const std::string& line) {
-    if (world.is_root()) error_line << line << '\n';
-    return rbcsim::kExitBadInput;
-  };
-  const auto failure = [&world, &error_line](const std::string& line, int code) {
+  const auto finish = [&world, errors](const std::string& line, int code) {
     if (world.size() == 1) {
-      error_line << line << '\n';
+      std::fprintf(errors, "%s\n", line.c_str());
       return code;
     }
-    error_line << "[rank " << world.rank() << "] " << line << std::endl;
+    if (rbcsim::parallel::every_process_fails_together(kFailureAgreementSeconds)) {
+      if (world.is_root()) std::fprintf(errors, "%s\n", line.c_str());
+      return code;
+    }
+    std::fprintf(errors, "[rank %d] %s\n", world.rank(), line.c_str());
+    std::fflush(errors);
     world.abort(code);
   };
+  const auto bad_input = [&finish](const std::string& line) {
+    return finish(line, rbcsim::kExitBadInput);
+  };
+  const auto failure = [&finish](const std::string& line, int code) { return finish(line, code); };
   CLI::App application{
       "rbcsim — red blood cells (discocyte, stomatocyte II, echinocyte III) stretched, sheared\n"
       "and squeezed through capillaries: D3Q19 lattice Boltzmann plasma, six-force membrane,\n"

@@ -16,6 +16,7 @@
 #include "io/atomic_file.hpp"
 #include "io/sha256.hpp"
 #include "io/text_file.hpp"
+#include "parallel/communicator.hpp"
 
 namespace rbcsim::cli {
 namespace {
@@ -64,7 +65,11 @@ RunDirectory::RunDirectory(std::string command, const CommonOptions& options,
       morphology_(config.string("morphology")),
       threads_(apply_threads(options.threads)),
       started_(WallClock::now()) {
-  const auto now = std::chrono::system_clock::now();
+  // Rank 0's clock on every process of a run across processes: one default directory name.
+  double seconds =
+      static_cast<double>(std::chrono::system_clock::to_time_t(std::chrono::system_clock::now()));
+  parallel::Communicator::world().broadcast_from_root(std::span<double>(&seconds, 1));
+  const auto now = std::chrono::system_clock::from_time_t(static_cast<std::time_t>(seconds));
   started_utc_ = utc_text(now, "%Y-%m-%dT%H:%M:%SZ");
   path_ = !options.output_directory.empty()
               ? options.output_directory
@@ -77,8 +82,9 @@ double RunDirectory::elapsed_s() const { return seconds_since(started_); }
 
 void RunDirectory::start(const config::Config& config, const setup::CellMesh& cell) const {
   std::error_code error;
-  std::filesystem::create_directories(path_, error);
-  if (error || !std::filesystem::is_directory(path_)) {
+  // Only the process that writes files makes the directory (main.cpp stops the run if it fails).
+  if (io::process_writes_files()) std::filesystem::create_directories(path_, error);
+  if (io::process_writes_files() && (error || !std::filesystem::is_directory(path_))) {
     throw InputError(path_.string(), "cannot create the run directory" +
                                          (error ? ": " + error.message() : std::string()));
   }
@@ -163,9 +169,11 @@ void wire_checkpoints_in(const std::filesystem::path& subdirectory,
                          coupling::CoupledSimulation& simulation, const CheckpointOptions& options,
                          const RunDirectory& directory, const config::Config& config) {
   const auto file = directory.path() / subdirectory / coupling::kCheckpointFileName;
-  std::filesystem::create_directories(file.parent_path());
+  if (io::process_writes_files()) std::filesystem::create_directories(file.parent_path());
   set_checkpoint_file(simulation, options, file, config);
-  if (!options.resume_directory.empty() && std::filesystem::exists(file)) {
+  // Across processes all resume if any sees the file (resume_from then agrees on reading it).
+  if (!options.resume_directory.empty() &&
+      parallel::Communicator::world().any(std::filesystem::exists(file))) {
     simulation.resume_from(file);
   }
 }

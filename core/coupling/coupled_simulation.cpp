@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <exception>
 #include <stdexcept>
 
@@ -10,6 +11,7 @@
 #include "common/interrupt.hpp"
 #include "coupling/checkpoint.hpp"
 #include "coupling/snapshot.hpp"
+#include "io/state_archive_file.hpp"
 #include "parallel/distributed_fluid.hpp"
 #include "parallel/distributed_ibm.hpp"
 
@@ -501,7 +503,11 @@ RunSummary CoupledSimulation::run() {
   std::optional<std::string> reason;
   auto last_checkpoint = Clock::now();
   while (!reason) {
-    if (on_any_process(interrupt_requested())) stop_interrupted();
+    if (on_any_process(interrupt_requested())) {
+      // A signal may reach some processes only (kill -INT to one): all stop alike.
+      if (!interrupt_requested()) request_interrupt(SIGINT);
+      stop_interrupted();
+    }
     step();
     ++summary.steps;
     reason = stop_reason();
@@ -550,7 +556,26 @@ void CoupledSimulation::write_checkpoint_now() const {
 }
 
 void CoupledSimulation::resume_from(const std::filesystem::path& checkpoint_file) {
-  read_checkpoint(checkpoint_file, *this, checkpoint_policy_.config_fingerprint);
+  if (!distributed_) {
+    read_checkpoint(checkpoint_file, *this, checkpoint_policy_.config_fingerprint);
+    return;
+  }
+  // Every process reads the file; they agree before the collective restore, so that one that
+  // cannot read it stops them all with the reason (rank 0's, if it is among them).
+  StateArchive archive;
+  std::string problem;
+  try {
+    archive = io::read_state_archive(checkpoint_file, kCheckpointVersion,
+                                     checkpoint_policy_.config_fingerprint);
+  } catch (const InputError& error) {
+    problem = error.what();
+  }
+  if (on_any_process(!problem.empty())) {
+    if (!problem.empty()) throw InputError(problem);
+    throw InputError(checkpoint_file.string(), "unreadable on another process of the run");
+  }
+  restore_state(archive);
+  archive.require_all_taken();
 }
 
 void CoupledSimulation::save_state(StateArchive& archive) const {

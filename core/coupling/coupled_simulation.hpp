@@ -17,10 +17,12 @@
 //
 // Across processes (CouplingParameters::processes, more than one): the fluid runs on the
 // distributed lattice (parallel/distributed_fluid.hpp), cut from the undivided solver the case set
-// up; every process holds every cell and computes its forces; each spreads them onto its own
-// planes and interpolates the vertices in its planes, and the velocities are copied to all
-// (parallel/distributed_ibm.hpp). The state is bit-identical to one process's, on any number of
-// processes. Observers and stop criteria run on every process alike; only rank 0 writes files.
+// up; every process holds every cell; with several cells, each cell's membrane and hook forces
+// are computed by the process holding its centroid's plane and copied to all (contact is computed
+// everywhere); each process spreads the forces onto its own planes and interpolates the vertices
+// in its planes, and the velocities are copied to all (parallel/distributed_ibm.hpp). The state is
+// bit-identical to one process's, on any number of processes. Observers and stop criteria run on
+// every process alike; only rank 0 writes files.
 //
 // An instability stops the run (docs/physics.md, "Failures"): if a run directory is set, a dump
 // (membrane .vtp of every cell, fluid .vti, failure.json) is written to <run directory>/failure/,
@@ -70,8 +72,8 @@ struct CouplingParameters {
   // Where failure dumps go (and what observers may write to); empty: no dump.
   std::filesystem::path run_directory;
   // The processes the fluid is cut across: one (the default) steps the undivided solver, several
-  // its slabs. Not distributed yet (InputError): a viscosity contrast, membrane viscosity, moving
-  // walls, inlets, outlets, curved wall links.
+  // its slabs. Not distributed yet (InputError): a viscosity contrast, membrane viscosity, curved
+  // wall links under an interpolated wall rule.
   parallel::Communicator processes = parallel::Communicator::self();
   // lattice.block_planes: the z-planes of one block of the decomposition (at least 2).
   int block_planes = 4;

@@ -3,9 +3,11 @@
 #include "common/errors.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <limits>
 #include <string>
+#include <thread>
 #include <utility>
 
 #ifdef RBCSIM_WITH_MPI
@@ -17,6 +19,12 @@ namespace rbcsim::parallel {
 namespace {
 bool session_active = false;
 }  // namespace
+
+#ifdef RBCSIM_WITH_MPI
+namespace {
+MPI_Comm failure_comm = MPI_COMM_NULL;  // MPI_COMM_WORLD's duplicate for failure agreement
+}  // namespace
+#endif
 
 bool built_with_mpi() {
 #ifdef RBCSIM_WITH_MPI
@@ -75,11 +83,13 @@ MpiSession::MpiSession(int& argc, char**& argv) {
   int provided = 0;
   check_mpi(MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
   MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
+  check_mpi(MPI_Comm_dup(MPI_COMM_WORLD, &failure_comm), "MPI_Comm_dup");
   session_active = true;
 }
 
 MpiSession::~MpiSession() {
   if (!session_active) return;
+  MPI_Comm_free(&failure_comm);
   MPI_Finalize();
   session_active = false;
 }
@@ -94,6 +104,19 @@ Communicator Communicator::world() {
 }
 
 Communicator Communicator::self() { return Communicator(nullptr, 0, 1); }
+
+bool every_process_fails_together(double timeout_s) {
+  if (!session_active) return true;
+  MPI_Request request = MPI_REQUEST_NULL;
+  if (MPI_Ibarrier(failure_comm, &request) != MPI_SUCCESS) return false;
+  const double start = MPI_Wtime();
+  int done = 0;
+  while (MPI_Test(&request, &done, MPI_STATUS_IGNORE) == MPI_SUCCESS && done == 0) {
+    if (MPI_Wtime() - start > timeout_s) return false;  // the barrier is left pending: aborting
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return done != 0;
+}
 
 void Communicator::send_receive(std::span<const double> send, int destination,
                                 std::span<double> receive, int source, int tag) const {
@@ -280,6 +303,7 @@ std::vector<double> Communicator::scatter_from_root(
   }
   return per_rank[0];
 }
+bool every_process_fails_together(double /*timeout_s*/) { return true; }
 Communicator Communicator::split(int /*colour*/) const { return *this; }
 void Communicator::broadcast_from_root(std::span<double> /*values*/) const {}
 bool Communicator::any(bool local) const { return local; }

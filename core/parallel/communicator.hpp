@@ -39,6 +39,14 @@ class MpiSession {
   static bool active();
 };
 
+// For main()'s failure path (an exception that ended a command on this process): whether every
+// process of the run reaches this call within `timeout_s` seconds of the first. Then the failure
+// was the same everywhere (results are identical on every process), and each can exit with its
+// code; otherwise one process failed alone and the run must be aborted. A non-blocking barrier on
+// a communicator of its own, created by MpiSession, so it never meets another collective. Without
+// a session: true at once.
+bool every_process_fails_together(double timeout_s);
+
 class Communicator {
  public:
   // Every process of the run (MPI_COMM_WORLD), or this process alone without an active session.

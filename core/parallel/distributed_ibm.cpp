@@ -72,11 +72,13 @@ class SlabVelocities {
   Vec3 at(std::size_t node) const {
     const int z = static_cast<int>(node / plane_size_);
     const std::size_t in_plane = node % plane_size_;
-    // The node's plane relative to the slab, the periodic image nearest to it.
+    // The node's plane relative to the slab, as the image within the reach: below the slab by at
+    // most below_ planes, or above it by at most above_ (either image of a plane reached from
+    // both sides holds the same velocity).
     int offset = z - fluid_.z_begin();
     const int nz = fluid_.global_grid().nz();
-    if (offset < -kHaloPlanes) offset += nz;
-    if (offset >= slab_ + kHaloPlanes) offset -= nz;
+    if (offset < -below_) offset += nz;
+    if (offset >= slab_ + above_) offset -= nz;
     if (offset >= 0 && offset < slab_) {
       const std::size_t local = in_plane + (offset + kHaloPlanes) * plane_size_;
       return Vec3(velocity_[0][local], velocity_[1][local], velocity_[2][local]);

@@ -5,6 +5,8 @@
 // on any number of processes. A checkpoint written on all processes resumes on half of them.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <span>
@@ -13,10 +15,13 @@
 
 #include "coupling/checkpoint.hpp"
 #include "coupling/coupled_simulation.hpp"
+#include "ibm/interpolation_stencil.hpp"
+#include "ibm/transfer.hpp"
 #include "io/atomic_file.hpp"
 #include "membrane/membrane_model.hpp"
 #include "mesh/icosphere.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/distributed_ibm.hpp"
 #include "units/unit_converter.hpp"
 
 #include <unistd.h>
@@ -144,6 +149,55 @@ TEST(ProcessesCoupledSimulation, CheckpointWrittenOnAllResumesOnHalfBitForBit) {
   world.barrier();
   io::set_process_writes_files(true);
   if (world.is_root()) std::filesystem::remove(file);
+}
+
+// Slabs as thin as they come (2 planes, and 3 at the top; 2 x processes + 1 planes in all) and
+// points whose stencils reach across the periodic seam from the top slab into the bottom one and
+// back, with each kernel: the velocities are those interpolated on one undivided solver, bit for
+// bit. (A ghost plane taken from the wrong side of the seam stops the run.)
+TEST(ProcessesThinSlabs, VerticesAcrossTheSeamInterpolateAsOnTheUndividedLattice) {
+  const Communicator world = Communicator::world();
+  const lattice::LatticeGrid grid(6, 5, 2 * world.size() + 1);
+  const auto velocity_at = [&grid](int x, int y, int z) {
+    return std::array<double, 3>{0.01 * std::sin(0.7 * z + 0.3 * x), 0.004 * y,
+                                 0.002 * std::cos(1.1 * z)};
+  };
+  DistributedFluid distributed(world, grid, 2, {});
+  distributed.initialise_equilibrium([&](int x, int y, int z) {
+    return DistributedFluid::NodeState{1.0, velocity_at(x, y, z)};
+  });
+  distributed.step();
+  lattice::FluidSolver undivided(grid, {});
+  std::vector<double> density(grid.node_count(), 1.0);
+  lattice::VectorField velocity{std::vector<double>(grid.node_count()),
+                                std::vector<double>(grid.node_count()),
+                                std::vector<double>(grid.node_count())};
+  for (std::size_t node = 0; node < grid.node_count(); ++node) {
+    const auto c = grid.coordinates(node);
+    const auto u = velocity_at(c[0], c[1], c[2]);
+    for (int axis = 0; axis < 3; ++axis) velocity[axis][node] = u[axis];
+  }
+  undivided.initialise_equilibrium(density, velocity);
+  undivided.step();
+  const double top = grid.nz() - 0.5;
+  const std::vector<Vec3> positions = {{2.3, 2.1, top},        {3.1, 1.7, top + 0.3},
+                                       {1.2, 3.3, 0.2},        {4.4, 2.2, -0.4},
+                                       {2.5, 2.5, 2.0 + 0.61}, {0.7, 1.1, grid.nz() - 2.2}};
+  const ibm::GridView view{grid.nx(), grid.ny(), grid.nz(), true, true, true};
+  for (const char* kernel : {"phi2", "phi3", "phi4"}) {
+    DistributedImmersedBoundary points(distributed, kernel);
+    points.build(positions);
+    const auto interpolated = points.interpolate(distributed);
+    ibm::InterpolationStencil stencil;
+    stencil.build(ibm::find_delta_kernel(kernel), view, positions);
+    std::vector<Vec3> expected(positions.size());
+    const auto& u = undivided.velocity();
+    ibm::interpolate_velocity(stencil, view, u[0].data(), u[1].data(), u[2].data(), expected);
+    for (std::size_t p = 0; p < positions.size(); ++p) {
+      EXPECT_EQ(interpolated[p], expected[p])
+          << kernel << ", point " << p << " on " << world.size() << " processes";
+    }
+  }
 }
 
 }  // namespace
