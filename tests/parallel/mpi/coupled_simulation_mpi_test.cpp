@@ -158,7 +158,7 @@ TEST(ProcessesCoupledSimulation, CheckpointWrittenOnAllResumesOnHalfBitForBit) {
 TEST(ProcessesThinSlabs, VerticesAcrossTheSeamInterpolateAsOnTheUndividedLattice) {
   const Communicator world = Communicator::world();
   const lattice::LatticeGrid grid(6, 5, 2 * world.size() + 1);
-  const auto velocity_at = [&grid](int x, int y, int z) {
+  const auto velocity_at = [](int x, int y, int z) {
     return std::array<double, 3>{0.01 * std::sin(0.7 * z + 0.3 * x), 0.004 * y,
                                  0.002 * std::cos(1.1 * z)};
   };
