@@ -78,7 +78,6 @@ int main(int argc, char** argv) {
   const auto bad_input = [&finish](const std::string& line) {
     return finish(line, rbcsim::kExitBadInput);
   };
-  const auto failure = [&finish](const std::string& line, int code) { return finish(line, code); };
   CLI::App application{
       "rbcsim — red blood cells (discocyte, stomatocyte II, echinocyte III) stretched, sheared\n"
       "and squeezed through capillaries: D3Q19 lattice Boltzmann plasma, six-force membrane,\n"
@@ -109,12 +108,12 @@ int main(int argc, char** argv) {
   } catch (const rbcsim::InputError& error) {
     return bad_input("rbcsim: error: " + std::string(error.what()));
   } catch (const rbcsim::RuntimeFailure& error) {
-    return failure("rbcsim: failed: " + std::string(error.what()), rbcsim::kExitRuntimeFailure);
+    return finish("rbcsim: failed: " + std::string(error.what()), rbcsim::kExitRuntimeFailure);
   } catch (const rbcsim::Interrupted& interrupted) {
-    return failure("rbcsim: stopped: " + std::string(interrupted.what()), rbcsim::kExitInterrupted);
+    return finish("rbcsim: stopped: " + std::string(interrupted.what()), rbcsim::kExitInterrupted);
   } catch (const std::exception& unexpected) {
-    return failure("rbcsim: internal error: " + std::string(unexpected.what()),
-                   rbcsim::kExitRuntimeFailure);
+    return finish("rbcsim: internal error: " + std::string(unexpected.what()),
+                  rbcsim::kExitRuntimeFailure);
   }
   return rbcsim::kExitSuccess;
 }

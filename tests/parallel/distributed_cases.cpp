@@ -1,10 +1,14 @@
 #include "distributed_cases.hpp"
 
+#include <unistd.h>
+
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <numbers>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -257,6 +261,13 @@ CoupledState run_coupled_distributed(std::string_view kernel, std::size_t steps,
   CoupledState state{fluid->gather_stored_populations(), {}};
   if (communicator.is_root()) state.positions = flat(points);
   return state;
+}
+
+std::filesystem::path checkpoint_file(const Communicator& world, const std::string& prefix) {
+  double root_pid = static_cast<double>(::getpid());
+  world.broadcast_from_root(std::span<double>(&root_pid, 1));
+  return std::filesystem::temp_directory_path() /
+         (prefix + std::to_string(static_cast<long>(root_pid)) + ".bin");
 }
 
 }  // namespace rbcsim::parallel::testing

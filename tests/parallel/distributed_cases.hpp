@@ -7,6 +7,7 @@
 #include "parallel/distributed_fluid.hpp"
 
 #include <cstddef>
+#include <filesystem>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -68,5 +69,9 @@ CoupledState run_coupled_undivided(std::string_view kernel, std::size_t steps);
 // Rank 0 gets the state; the other ranks empty vectors.
 CoupledState run_coupled_distributed(std::string_view kernel, std::size_t steps,
                                      const Communicator& communicator);
+
+// A checkpoint file every process names alike (collective): rank 0's process id, after `prefix`,
+// in the temporary directory.
+std::filesystem::path checkpoint_file(const Communicator& world, const std::string& prefix);
 
 }  // namespace rbcsim::parallel::testing

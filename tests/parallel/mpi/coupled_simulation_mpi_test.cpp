@@ -15,25 +15,21 @@
 
 #include "coupling/checkpoint.hpp"
 #include "coupling/coupled_simulation.hpp"
+#include "coupling_fixtures.hpp"
+#include "distributed_cases.hpp"
 #include "ibm/interpolation_stencil.hpp"
 #include "ibm/transfer.hpp"
 #include "io/atomic_file.hpp"
 #include "membrane/membrane_model.hpp"
-#include "mesh/icosphere.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_ibm.hpp"
 #include "units/unit_converter.hpp"
-
-#include <unistd.h>
 
 namespace rbcsim::parallel::coupled_mpi {
 namespace {
 
 constexpr std::size_t kCells = 20;
 constexpr double kPushPerVertexPN = 0.2;
-
-// dx = 0.5 um, tau = 1: plasma.
-units::UnitConverter plasma_units() { return units::UnitConverter({0.5, 1.0, 1025.0, 1.1e-6}); }
 
 // 16 x 14 x 24 nodes (8 x 7 x 12 um), periodic, the y faces sliding at +-0.01 (lattice units).
 std::unique_ptr<lattice::FluidSolver> sheared_box() {
@@ -48,18 +44,15 @@ std::unique_ptr<coupling::CoupledSimulation> suspension(const Communicator& proc
   coupling::CouplingParameters coupling;
   coupling.processes = processes;
   coupling.block_planes = 2;
-  auto simulation = std::make_unique<coupling::CoupledSimulation>(sheared_box(), plasma_units(),
-                                                                  std::move(coupling));
-  membrane::MembraneParameters capsule;
-  capsule.forces = {"link", "area", "volume"};
-  capsule.k_link_kBT = 300.0;
+  auto simulation = std::make_unique<coupling::CoupledSimulation>(
+      sheared_box(), coupling::testing::plasma_units(), std::move(coupling));
+  const auto capsule = coupling::testing::capsule_parameters(300.0);
   std::size_t added = 0;
   for (const double z_um : {0.2, 3.2, 6.2, 9.2}) {
     for (const double y_um : {2.3, 4.7}) {
       for (const double x_um : {1.3, 3.9, 6.5}) {
         if (added == kCells) break;
-        auto sphere = mesh::unit_icosphere(1);
-        for (Vec3& p : sphere.positions_um) p = Vec3(x_um, y_um, z_um) + 1.0 * p;
+        const auto sphere = coupling::testing::sphere_mesh(1, 1.0, Vec3(x_um, y_um, z_um));
         simulation->add_cell(membrane::MembraneModel(sphere, capsule), sphere.positions_um);
         ++added;
       }
@@ -122,10 +115,7 @@ TEST(ProcessesCoupledSimulation, CheckpointWrittenOnAllResumesOnHalfBitForBit) {
   constexpr std::size_t kAfter = 13;
   const Communicator world = Communicator::world();
   io::set_process_writes_files(world.is_root());
-  double root_pid = static_cast<double>(::getpid());
-  world.broadcast_from_root(std::span<double>(&root_pid, 1));
-  const auto file = std::filesystem::temp_directory_path() /
-                    ("rbcsim_mpi_coupled_" + std::to_string(static_cast<long>(root_pid)) + ".bin");
+  const auto file = testing::checkpoint_file(world, "rbcsim_mpi_coupled_");
   {
     auto simulation = suspension(world);
     advance(*simulation, kBefore);

@@ -13,8 +13,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 namespace rbcsim::parallel {
 namespace {
 
@@ -58,14 +56,6 @@ INSTANTIATE_TEST_SUITE_P(DistributedImmersedBoundary, ProcessesCoupled,
                          ::testing::Values("phi2", "phi3", "phi4"),
                          [](const auto& parameter) { return parameter.param; });
 
-// A checkpoint file every process names alike: rank 0's process id in the temporary directory.
-std::filesystem::path checkpoint_file(const Communicator& world, const std::string& prefix) {
-  double root_pid = static_cast<double>(::getpid());
-  world.broadcast_from_root(std::span<double>(&root_pid, 1));
-  return std::filesystem::temp_directory_path() /
-         (prefix + std::to_string(static_cast<long>(root_pid)) + ".bin");
-}
-
 // Written on every process of the run, resumed on the first half of them (4 -> 2, 3 -> 2, 2 -> 1)
 // and on rank 0 alone: the uninterrupted undivided run's state, bit for bit.
 TEST(ProcessesCheckpoint, WrittenOnAllResumesOnFewerProcessesBitForBit) {
@@ -73,7 +63,7 @@ TEST(ProcessesCheckpoint, WrittenOnAllResumesOnFewerProcessesBitForBit) {
   constexpr std::size_t kAfter = 12;
   const testing::DistributedCase flow = testing::case_named("aa_force_field");
   const Communicator world = Communicator::world();
-  const auto file = checkpoint_file(world, "rbcsim_mpi_checkpoint_");
+  const auto file = testing::checkpoint_file(world, "rbcsim_mpi_checkpoint_");
   auto fluid = testing::make_distributed(flow, world);
   testing::advance_distributed(flow, *fluid, kBefore);
   fluid->write_checkpoint(file, "mpi test");
@@ -111,7 +101,7 @@ TEST(ProcessesCheckpoint, WrittenOnOneResumesOnAllBitForBit) {
   constexpr std::size_t kAfter = 12;
   const testing::DistributedCase flow = testing::case_named("aa_obstacle_across_slabs");
   const Communicator world = Communicator::world();
-  const auto file = checkpoint_file(world, "rbcsim_mpi_checkpoint_one_");
+  const auto file = testing::checkpoint_file(world, "rbcsim_mpi_checkpoint_one_");
   std::vector<double> expected;
   if (world.is_root()) {
     auto alone = testing::make_distributed(flow, Communicator::self());
