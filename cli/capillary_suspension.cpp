@@ -142,7 +142,7 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
   bool started = false;
   auto run = cases::run_suspension(
       morphologies, cells, physics, settings, [&](coupling::CoupledSimulation& simulation) {
-        coupling::add_vtk_output(simulation, directory.path(), intervals, kinds);
+        coupling::add_snapshot_output(simulation, directory.path(), intervals, kinds);
         simulation.add_observer(
             {"progress", kProgressIntervalSteps, [&](const coupling::CoupledSimulation& s) {
                progress.update("suspension: step " + std::to_string(s.time_step()) +

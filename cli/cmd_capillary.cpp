@@ -188,7 +188,7 @@ cases::CapillaryRun run_release(const CapillaryContext& c, const mesh::TriangleM
   auto run = cases::run_capillary(
       cell_mesh, physics, c.settings, [&](coupling::CoupledSimulation& simulation) {
         // Output observers before the checkpoint is wired: a resume restores their state.
-        coupling::add_vtk_output(simulation, output, intervals);
+        coupling::add_snapshot_output(simulation, output, intervals);
         add_progress(simulation, progress, c.directory, c.compression.factor);
         if (subdirectory.empty()) {
           // Before the directory is started: a refused checkpoint leaves no file behind.

@@ -315,7 +315,7 @@ void run_sheared_suspension_command(const config::ConfigRequest& request,
     point.run = cases::run_sheared_suspension(
         morphologies, cells, physics, settings, [&](coupling::CoupledSimulation& simulation) {
           std::filesystem::create_directories(rate_path);
-          coupling::add_vtk_output(simulation, rate_path, intervals, kinds);
+          coupling::add_snapshot_output(simulation, rate_path, intervals, kinds);
           simulation.add_observer(
               {"progress", kShearProgressIntervalSteps, [&](const coupling::CoupledSimulation& s) {
                  progress.update("shear suspension: rate " + std::to_string(i + 1) + "/" +

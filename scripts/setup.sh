@@ -17,8 +17,10 @@ shift || true
 # while the libraries it links are still being built (make waits for them: on 2 cores one core
 # idled through the chain of libraries and the rbcsim binary).
 # openmpi-bin libopenmpi-dev: runs across processes (mpirun; RBCSIM_MPI below).
+# libhdf5-openmpi-dev: parallel HDF5 snapshots with XDMF indexes (RBCSIM_HDF5 below).
 required_packages=(cmake ninja-build g++ libcli11-dev libeigen3-dev nlohmann-json3-dev
-                   libassimp-dev libgtest-dev libexpat1-dev openmpi-bin libopenmpi-dev)
+                   libassimp-dev libgtest-dev libexpat1-dev openmpi-bin libopenmpi-dev
+                   libhdf5-openmpi-dev)
 read -r -a extra_packages <<<"${RBCSIM_EXTRA_PACKAGES:-}"
 required_packages+=("${extra_packages[@]}")
 
@@ -44,5 +46,5 @@ fi
 # An existing build directory keeps the generator it was made with.
 generator=()
 [[ -f "$build_dir/CMakeCache.txt" ]] || generator=(-G Ninja)
-cmake -S "$repo_root" -B "$build_dir" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release -DRBCSIM_MPI=ON "$@" >/dev/null
+cmake -S "$repo_root" -B "$build_dir" "${generator[@]}" -DCMAKE_BUILD_TYPE=Release -DRBCSIM_MPI=ON -DRBCSIM_HDF5=ON "$@" >/dev/null
 cmake --build "$build_dir" --parallel "$(nproc)"

@@ -5,8 +5,8 @@ set -euo pipefail
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 jobs="$(nproc)"
 # clang with its sanitizer and libFuzzer runtimes and its OpenMP runtime, for the sanitizer and
-# fuzz stages.
-export RBCSIM_EXTRA_PACKAGES="clang-14 libclang-rt-14-dev libomp-14-dev"
+# fuzz stages; python3-h5py, which reads the HDF5 snapshots back (tests/parallel/mpi).
+export RBCSIM_EXTRA_PACKAGES="clang-14 libclang-rt-14-dev libomp-14-dev python3-h5py"
 
 # Each stage's start with the seconds since this script's (CI's budget is 25 minutes).
 stage() { echo "== $1 (at ${SECONDS} s)" >&2; }

@@ -307,8 +307,9 @@ StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const Stretch
   if (fluid_settings.snapshot_interval_s > 0.0 && !fluid_settings.output_directory.empty()) {
     const double steps =
         units.to_lattice(units::PhysicalUnit::time_s, fluid_settings.snapshot_interval_s);
-    coupling::add_vtk_output(*simulation, fluid_settings.output_directory,
-                             {static_cast<std::size_t>(std::max(1.0, std::round(steps))), 0});
+    coupling::add_snapshot_output(*simulation, fluid_settings.output_directory,
+                                  {static_cast<std::size_t>(std::max(1.0, std::round(steps))), 0,
+                                   fluid_settings.snapshot_format});
   }
   if (fluid_settings.configure) fluid_settings.configure(*simulation);
 

@@ -23,6 +23,7 @@
 #include "cases/contact_patches.hpp"
 #include "common/vec3.hpp"
 #include "coupling/coupled_simulation.hpp"
+#include "coupling/snapshot.hpp"
 #include "coupling/stop_criteria.hpp"
 #include "lattice/fluid_solver.hpp"
 #include "membrane/membrane_model.hpp"
@@ -54,6 +55,8 @@ struct FluidStretchSettings {
   double max_time_per_force_s = 0.05;
   // Membrane .vtp time series (vtk/, cell0.pvd) every so often; 0: the per-force shapes only.
   double snapshot_interval_s = 0.0;
+  // Or, with hdf5, h5/ and cells.xdmf (coupling/snapshot.hpp).
+  coupling::SnapshotFormat snapshot_format = coupling::SnapshotFormat::vtk;
   // Where failure dumps, the time series and the final fluid.vti go; empty: nowhere.
   std::filesystem::path output_directory;
   // Called once with the simulation built (cell, tweezers, observers, stop criteria), before the

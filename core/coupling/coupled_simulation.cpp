@@ -316,13 +316,18 @@ void CoupledSimulation::compute_cell_forces() {
 // The same code on the same positions gives the same forces on any process: the copies are the
 // values the owner computed, bit for bit, and the step goes on as if every process had computed
 // every cell.
-bool CoupledSimulation::compute_owned_cell_forces() {
+bool CoupledSimulation::owns_cell(std::size_t index) const {
+  if (!distributed_) return true;
   const int nz = distributed_->global_grid().nz();
+  const int plane = lattice::LatticeGrid::wrap(
+      static_cast<int>(std::floor(cells_.at(index).centroid_lu().z())), nz);
+  return plane >= distributed_->z_begin() && plane < distributed_->z_end();
+}
+
+bool CoupledSimulation::compute_owned_cell_forces() {
   std::vector<std::size_t> owned;
   for (std::size_t k = 0; k < cells_.size(); ++k) {
-    const int plane =
-        lattice::LatticeGrid::wrap(static_cast<int>(std::floor(cells_[k].centroid_lu().z())), nz);
-    if (plane >= distributed_->z_begin() && plane < distributed_->z_end()) owned.push_back(k);
+    if (owns_cell(k)) owned.push_back(k);
   }
   const auto failures = run_on_cells(owned, [this](std::size_t k) {
     cells_[k].compute_membrane_forces(frame_);

@@ -209,6 +209,13 @@ class CoupledSimulation {
   const lattice::FluidSolver& fluid() const;
   // Whether the fluid runs across several processes.
   bool distributed() const { return distributed_ != nullptr; }
+  // The fluid across processes (null on one): this process's slab, which a parallel writer
+  // (hdf5_snapshot.cpp) reads without gathering.
+  const parallel::DistributedFluid* distributed_fluid() const { return distributed_.get(); }
+  // Whether this process owns cell `index`: across processes, the one whose planes hold its
+  // centroid, which computes its membrane forces (with several cells) and writes its part of a
+  // snapshot; on one process, every cell.
+  bool owns_cell(std::size_t index) const;
   // Across processes (collective): the distributed fluid's state copied into fluid() on every
   // process, unless it already holds this step's; nothing on one process.
   void gather_fluid();

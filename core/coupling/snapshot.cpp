@@ -209,6 +209,16 @@ void add_vtk_output(CoupledSimulation& simulation, const std::filesystem::path& 
   }
 }
 
+void add_snapshot_output(CoupledSimulation& simulation, const std::filesystem::path& directory,
+                         const SnapshotIntervals& intervals,
+                         std::span<const std::int32_t> cell_kinds) {
+  if (intervals.format == SnapshotFormat::hdf5) {
+    add_hdf5_output(simulation, directory, intervals, cell_kinds);
+  } else {
+    add_vtk_output(simulation, directory, intervals, cell_kinds);
+  }
+}
+
 void write_failure_dump(const std::filesystem::path& directory, const CoupledSimulation& simulation,
                         std::optional<std::size_t> cell, const std::string& reason) {
   std::filesystem::create_directories(directory);

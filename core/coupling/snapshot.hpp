@@ -32,10 +32,15 @@ void write_cell_snapshot(const std::filesystem::path& path, const CoupledSimulat
                          std::size_t cell_index);
 void write_fluid_snapshot(const std::filesystem::path& path, const CoupledSimulation& simulation);
 
+// The files of a snapshot: VTK (.vtp, .vti and .pvd, written by rank 0 from gathered copies
+// across processes) or HDF5 with XDMF indexes (each process writing its part; below).
+enum class SnapshotFormat { vtk, hdf5 };
+
 // Snapshot intervals in steps; 0: none of that kind.
 struct SnapshotIntervals {
   std::size_t membrane_steps = 0;
   std::size_t fluid_steps = 0;
+  SnapshotFormat format = SnapshotFormat::vtk;
 };
 
 // Every cell in one polydata (vertices numbered cell after cell), with cell_id and cell_kind.
@@ -52,6 +57,28 @@ void write_cells_snapshot(const std::filesystem::path& path, const CoupledSimula
 void add_vtk_output(CoupledSimulation& simulation, const std::filesystem::path& directory,
                     const SnapshotIntervals& intervals,
                     std::span<const std::int32_t> cell_kinds = {});
+
+// Registers the observers "hdf5_membrane" and "hdf5_fluid", which write
+// <directory>/h5/cells_<step>.h5 and <directory>/h5/fluid_<step>.h5 (parallel/hdf5_file.hpp) and
+// rewrite the time series <directory>/cells.xdmf and <directory>/fluid.xdmf after each snapshot
+// (io/xdmf_series.hpp; continued after a resume as the .pvd are). Nothing is gathered: each
+// process writes the planes of its slab and the cells it owns (CoupledSimulation::owns_cell), into
+// datasets laid out by global plane and by cell id, so the files are the same on any process
+// count. Datasets, in the units of their names:
+//   fluid  velocity_m_per_s {nz, ny, nx, 3}, density_kg_per_m3 {nz, ny, nx}, solid_mask
+//          {nz, ny, nx} (uint8; the lattice's node kinds as in the .vti);
+//   cells  points_um {V, 3} (every cell's vertices, cell after cell), triangles {T, 3} (int32,
+//          indices into points_um), cell_id {V} (int32), velocity_m_per_s, external_force_pN,
+//          total_force_pN {V, 3}; with `cell_kinds` also cell_kind {V} (int32), without it
+//          membrane_force_pN and force_<term>_pN of every enabled term {V, 3}.
+void add_hdf5_output(CoupledSimulation& simulation, const std::filesystem::path& directory,
+                     const SnapshotIntervals& intervals,
+                     std::span<const std::int32_t> cell_kinds = {});
+
+// add_vtk_output or add_hdf5_output, as intervals.format says.
+void add_snapshot_output(CoupledSimulation& simulation, const std::filesystem::path& directory,
+                         const SnapshotIntervals& intervals,
+                         std::span<const std::int32_t> cell_kinds = {});
 
 // The diagnosis dump of a failed step into <directory>: cell<K>.vtp for every cell, fluid.vti,
 // and failure.json {"step", "time_s", "cell" (or null), "reason", "files"}.

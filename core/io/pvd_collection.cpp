@@ -1,6 +1,5 @@
 #include "io/pvd_collection.hpp"
 
-#include <charconv>
 #include <stdexcept>
 #include <string_view>
 
@@ -8,6 +7,7 @@
 #include "common/format.hpp"
 #include "io/atomic_file.hpp"
 #include "io/text_file.hpp"
+#include "io/xml_attribute.hpp"
 
 namespace rbcsim::io {
 
@@ -30,36 +30,6 @@ void write_pvd_collection(const std::filesystem::path& path, std::span<const Pvd
   });
 }
 
-namespace {
-
-// The value of `name="..."` in one element's text; InputError naming the file if it is missing.
-std::string attribute(std::string_view element, std::string_view name,
-                      const std::filesystem::path& path) {
-  // Built by appending: GCC 12 warns falsely (-Wrestrict) on " " + std::string (format.hpp).
-  std::string key(1, ' ');
-  key.append(name).append("=\"");
-  const auto start = element.find(key);
-  const auto end = start == std::string_view::npos ? start : element.find('"', start + key.size());
-  if (end == std::string_view::npos) {
-    throw InputError(path.string(), "a DataSet without a " + std::string(name) + " attribute");
-  }
-  return std::string(element.substr(start + key.size(), end - start - key.size()));
-}
-
-double number_attribute(std::string_view element, std::string_view name,
-                        const std::filesystem::path& path) {
-  const std::string text = attribute(element, name, path);
-  double value = 0.0;
-  const auto parsed = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (parsed.ec != std::errc() || parsed.ptr != text.data() + text.size()) {
-    throw InputError(path.string(),
-                     "DataSet " + std::string(name) + " " + in_quotes(text) + " is not a number");
-  }
-  return value;
-}
-
-}  // namespace
-
 std::vector<PvdEntry> read_pvd_collection(const std::filesystem::path& path) {
   const std::string text = read_text_file(path);
   if (text.find("<VTKFile type=\"Collection\"") == std::string::npos ||
@@ -73,7 +43,7 @@ std::vector<PvdEntry> read_pvd_collection(const std::filesystem::path& path) {
     if (end == std::string::npos) throw InputError(path.string(), "an unterminated DataSet");
     const std::string_view element(text.data() + begin, end - begin);
     entries.push_back(
-        {number_attribute(element, "timestep", path), attribute(element, "file", path)});
+        {xml_number_attribute(element, "timestep", path), xml_attribute(element, "file", path)});
   }
   return entries;
 }

@@ -315,6 +315,13 @@ void Communicator::abort(int exit_code) const { std::exit(exit_code); }
 
 bool MpiSession::active() { return session_active; }
 
+const void* Communicator::mpi_comm() const {
+#ifdef RBCSIM_WITH_MPI
+  if (handle_) return &handle_->comm;
+#endif
+  return nullptr;
+}
+
 Communicator::Communicator(std::shared_ptr<const Handle> handle, int rank, int size)
     : handle_(std::move(handle)), rank_(rank), size_(size) {}
 

@@ -83,6 +83,9 @@ class Communicator {
   Communicator split(int colour) const;
   // Stops every process of the run with this exit code (MPI_Abort); on one process, std::exit.
   [[noreturn]] void abort(int exit_code) const;
+  // The MPI communicator (points to an MPI_Comm) for a library that takes one, such as parallel
+  // HDF5; null on one process without MPI.
+  const void* mpi_comm() const;
 
  private:
   struct Handle;

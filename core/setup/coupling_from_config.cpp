@@ -6,6 +6,7 @@
 
 #include "common/errors.hpp"
 #include "parallel/communicator.hpp"
+#include "parallel/hdf5_file.hpp"
 
 namespace rbcsim::setup {
 namespace {
@@ -74,10 +75,23 @@ void require_runs_across_processes(const config::Config& config, bool curved_wal
   }
 }
 
+coupling::SnapshotFormat snapshot_format_from(const config::Config& config) {
+  const std::string format = config.string("output.format");
+  if (format == "hdf5" && !parallel::built_with_hdf5()) {
+    throw InputError("output.format",
+                     "hdf5: this rbcsim was built without HDF5 (cmake -DRBCSIM_HDF5=ON with "
+                     "Debian's libhdf5-openmpi-dev, as scripts/setup.sh does); use vtk");
+  }
+  const bool hdf5 = format == "hdf5" || (format == "auto" && parallel::built_with_hdf5() &&
+                                         parallel::Communicator::world().size() > 1);
+  return hdf5 ? coupling::SnapshotFormat::hdf5 : coupling::SnapshotFormat::vtk;
+}
+
 coupling::SnapshotIntervals snapshot_intervals_from(const config::Config& config,
                                                     const units::UnitConverter& units) {
   return {interval_steps(config.number("output.membrane_interval_s"), units),
-          interval_steps(config.number("output.fluid_interval_s"), units)};
+          interval_steps(config.number("output.fluid_interval_s"), units),
+          snapshot_format_from(config)};
 }
 
 }  // namespace rbcsim::setup

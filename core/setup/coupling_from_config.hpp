@@ -29,8 +29,11 @@ coupling::CouplingParameters coupling_parameters_from(const config::Config& conf
 // again (CoupledSimulation), with the case's geometry.
 void require_runs_across_processes(const config::Config& config, bool curved_walls = false);
 
+// output.format resolved for this run (auto: hdf5 across processes when built with it, else vtk);
+// InputError naming output.format for hdf5 in a build without it.
+coupling::SnapshotFormat snapshot_format_from(const config::Config& config);
 // Snapshot intervals in steps: each output.*_interval_s rounded to the nearest whole number of
-// steps (at least one); 0 stays 0 (no snapshots).
+// steps (at least one); 0 stays 0 (no snapshots). With the format of snapshot_format_from.
 coupling::SnapshotIntervals snapshot_intervals_from(const config::Config& config,
                                                     const units::UnitConverter& units);
 

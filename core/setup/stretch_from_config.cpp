@@ -33,6 +33,7 @@ cases::FluidStretchSettings fluid_stretch_settings_from(const config::Config& co
   settings.steady.check_interval_s = config.number("stretch.fluid.steady_check_interval_s");
   settings.max_time_per_force_s = config.number("stretch.fluid.max_time_per_force_s");
   settings.snapshot_interval_s = config.number("stretch.fluid.snapshot_interval_s");
+  settings.snapshot_format = snapshot_format_from(config);
   return settings;
 }
 

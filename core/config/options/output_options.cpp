@@ -14,6 +14,12 @@ void add_output_options(OptionTable& table) {
       .add_number("output.fluid_interval_s", "s", 5e-3,
                   "Time between fluid snapshots (.vti: velocity, density, solid mask); 0: none.")
       .at_least(0.0);
+  table.add_choice(
+      "output.format", {"auto", "vtk", "hdf5"}, "auto",
+      "Snapshot files: vtk (.vtp, .vti, .pvd; across processes gathered and written by "
+      "rank 0); hdf5 (h5/*.h5 with cells.xdmf and fluid.xdmf for ParaView, every "
+      "process writing its part; needs a build with RBCSIM_HDF5); auto: vtk on one "
+      "process, hdf5 across processes when built with it.");
 }
 
 }  // namespace rbcsim::config

@@ -85,8 +85,8 @@ void add_fluid_options(OptionTable& table) {
       .above(0.0);
   table
       .add_number("stretch.fluid.snapshot_interval_s", "s", fluid.snapshot_interval_s,
-                  "Membrane .vtp time series (vtk/, cell0.pvd) every so often; 0: only the "
-                  "shape at each force.")
+                  "Membrane time series every so often (vtk/ and cell0.pvd, or h5/ and "
+                  "cells.xdmf as output.format says); 0: only the shape at each force.")
       .at_least(0.0);
 }
 

@@ -2,12 +2,19 @@
 # The experiment commands under mpiexec against one process: every file of the run directory is
 # the same byte for byte, except the wall times (result.json, config.json's start time, a shear
 # rate's point.json, the wall_time_s column of a CSV table); the result is printed once; each run
-# exits 0. A capillary checkpointed on 4 processes resumes on 2 and on 1 to the same files.
-# Settings not distributed yet stop with exit 2, one line, before any output.
+# exits 0. Snapshots in both formats: the capillary and the tube suspension write HDF5 + XDMF
+# (output.format=hdf5, each process its part; the same bytes on 1 to 4 processes), which
+# check_hdf5_output.py reads with h5py against the VTK of the same run; the sheared suspension
+# writes VTK gathered onto rank 0. A capillary checkpointed on 4 processes resumes on 2 and on 1
+# to the same files. Settings not distributed yet stop with exit 2, one line, before any output.
 # Usage: commands_on_processes.sh MPIEXEC RBCSIM
 set -u
 mpiexec=$1
 rbcsim=$2
+check_hdf5="$(cd "$(dirname "$0")" && pwd)/check_hdf5_output.py"
+# Debian's python3 with python3-h5py (scripts/test.sh installs it), ahead of any other on PATH.
+python=python3
+[ -x /usr/bin/python3 ] && python=/usr/bin/python3
 failed=0
 work=$(mktemp -d) || exit 1
 trap 'rm -rf "$work"' EXIT
@@ -62,9 +69,12 @@ capillary="capillary --set mesh.subdivisions=2 --set mesh.method=parametric
   --set membrane.vertex_force_cap_pN=2000 --set capillary.throat_diameter_um=9
   --set capillary.inlet_velocity_m_per_s=0.014 --set capillary.pass_margin_um=2
   --set output.membrane_interval_s=2e-4 --set output.fluid_interval_s=1e-3
-  --set lattice.block_planes=2"
+  --set lattice.block_planes=2 --set output.format=hdf5"
 # shellcheck disable=SC2086
 same_as_one capillary "2 3 4" $capillary
+# shellcheck disable=SC2086
+"$rbcsim" $capillary --set output.format=vtk --threads 1 --output capillary.vtk >/dev/null 2>&1
+"$python" "$check_hdf5" capillary.2 capillary.vtk || failed=1
 # Checkpoints across process counts: the capillary written on 4 processes every 43 steps (the
 # last at step 301 of about 330, odd: the AA kernel's swapped layout), resumed on 2 and on 1; both
 # rewrite the straight run's time series and snapshots byte for byte. 330 steps leave the cell
@@ -86,7 +96,7 @@ else
     $launcher "$rbcsim" $checkpointed --resume "resumed$processes" >/dev/null 2>resumed.err
     code=$?
     [ $code -eq 1 ] || { echo "resumed on $processes: exit $code"; cat resumed.err; failed=1; }
-    for file in capillary_timeseries.csv cell0.pvd fluid.pvd $(cd written && find vtk -type f); do
+    for file in capillary_timeseries.csv cells.xdmf fluid.xdmf $(cd written && find h5 -type f); do
       cmp -s "written/$file" "resumed$processes/$file" ||
         { echo "written on 4, resumed on $processes: $file differs"; failed=1; }
     done
@@ -97,12 +107,16 @@ suspension="--set mesh.subdivisions=2 --set mesh.method=parametric --set lattice
   --set suspension.contact_range_um=1.75 --set lattice.block_planes=2"
 # shellcheck disable=SC2086
 same_as_one sheared_suspension "2" shear $suspension --hematocrit 0.1 --rates 200 \
-  --set suspension.strain=1
+  --set suspension.strain=1 --set output.format=vtk
+tube="capillary --geometry tube --diameter-um 10 --length-um 12 $suspension
+  --set suspension.duration_s=2e-4 --set suspension.sample_interval_s=2e-5
+  --set output.membrane_interval_s=1e-4 --set output.fluid_interval_s=1e-4 --hematocrit 0.2
+  --mix discocyte=0.5,stomatocyte-II=0.5"
 # shellcheck disable=SC2086
-same_as_one tube_suspension "2" capillary --geometry tube --diameter-um 10 --length-um 12 \
-  $suspension --set suspension.duration_s=2e-4 --set suspension.sample_interval_s=2e-5 \
-  --set output.membrane_interval_s=1e-4 --set output.fluid_interval_s=1e-4 --hematocrit 0.2 \
-  --mix discocyte=0.5,stomatocyte-II=0.5
+same_as_one tube_suspension "2" $tube --set output.format=hdf5
+# shellcheck disable=SC2086
+"$rbcsim" $tube --set output.format=vtk --threads 1 --output tube_suspension.vtk >/dev/null 2>&1
+"$python" "$check_hdf5" tube_suspension.2 tube_suspension.vtk || failed=1
 
 # What does not run across processes yet: exit 2, one line naming the setting, no run directory.
 refused() {
@@ -122,5 +136,5 @@ refused capillary --set mesh.subdivisions=2 --set lattice.wall_rule=bouzidi
 refused calibrate
 
 [ $failed -eq 0 ] && echo "shear, stretch --mode fluid, capillary and both suspensions: the same" \
-  "files as one process; settings not distributed yet refused"
+  "files as one process, HDF5 snapshots as VTK's; settings not distributed yet refused"
 exit $failed

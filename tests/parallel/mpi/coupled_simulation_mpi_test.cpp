@@ -15,14 +15,18 @@
 
 #include "coupling/checkpoint.hpp"
 #include "coupling/coupled_simulation.hpp"
+#include "coupling/snapshot.hpp"
 #include "coupling_fixtures.hpp"
 #include "distributed_cases.hpp"
 #include "ibm/interpolation_stencil.hpp"
 #include "ibm/transfer.hpp"
 #include "io/atomic_file.hpp"
+#include "io/sha256.hpp"
+#include "io/text_file.hpp"
 #include "membrane/membrane_model.hpp"
 #include "parallel/communicator.hpp"
 #include "parallel/distributed_ibm.hpp"
+#include "parallel/hdf5_file.hpp"
 #include "units/unit_converter.hpp"
 
 namespace rbcsim::parallel::coupled_mpi {
@@ -139,6 +143,55 @@ TEST(ProcessesCoupledSimulation, CheckpointWrittenOnAllResumesOnHalfBitForBit) {
   world.barrier();
   io::set_process_writes_files(true);
   if (world.is_root()) std::filesystem::remove(file);
+}
+
+// The SHA-256 of a file's bytes (a differing snapshot prints two digests, not megabytes).
+std::string file_digest(const std::filesystem::path& path) {
+  const std::string bytes = io::read_text_file(path);
+  return io::sha256_hex(std::as_bytes(std::span<const char>(bytes)));
+}
+
+// The 20 capsules' HDF5 snapshots (cells and fluid, every 10 steps), each process writing its
+// slab's planes and the cells it owns: the same files, byte for byte, as the undivided run writes
+// on one process, so on any process count.
+TEST(ProcessesCoupledSimulation, TwentyCellsHdf5SnapshotsAreTheUndividedRunsBytes) {
+  if (!built_with_hdf5()) GTEST_SKIP() << "built without HDF5 (RBCSIM_HDF5)";
+  constexpr std::size_t kSteps = 20;
+  const Communicator world = Communicator::world();
+  io::set_process_writes_files(world.is_root());
+  const auto base = testing::checkpoint_file(world, "rbcsim_mpi_hdf5_");
+  const auto written = std::filesystem::path(base).replace_extension(".distributed");
+  const auto expected = std::filesystem::path(base).replace_extension(".undivided");
+  const coupling::SnapshotIntervals every_ten{10, 10, coupling::SnapshotFormat::hdf5};
+  {
+    auto distributed = suspension(world);
+    coupling::add_hdf5_output(*distributed, written, every_ten,
+                              std::vector<std::int32_t>(kCells, 1));
+    distributed->observe_all();
+    advance(*distributed, kSteps);
+  }
+  world.barrier();
+  io::set_process_writes_files(true);
+  if (!world.is_root()) return;
+  {
+    auto undivided = suspension(Communicator::self());
+    coupling::add_hdf5_output(*undivided, expected, every_ten,
+                              std::vector<std::int32_t>(kCells, 1));
+    undivided->observe_all();
+    advance(*undivided, kSteps);
+  }
+  std::size_t compared = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(expected)) {
+    if (!entry.is_regular_file()) continue;
+    const auto relative = std::filesystem::relative(entry.path(), expected);
+    EXPECT_EQ(file_digest(written / relative), file_digest(entry.path()))
+        << relative << " on " << world.size() << " processes";
+    ++compared;
+  }
+  // Three snapshots (steps 0, 10, 20) of cells and fluid, and the two .xdmf.
+  EXPECT_EQ(compared, 8u);
+  std::filesystem::remove_all(written);
+  std::filesystem::remove_all(expected);
 }
 
 // Slabs as thin as they come (2 planes, and 3 at the top; 2 x processes + 1 planes in all) and
