@@ -17,6 +17,7 @@
 #include "membrane/membrane_model.hpp"
 #include "mesh/geometry.hpp"
 #include "mesh/transform.hpp"
+#include "parallel/distributed_fluid.hpp"
 
 namespace rbcsim::cases {
 namespace {
@@ -373,10 +374,12 @@ std::string not_passed_reason(const CapillaryRun& run) {
          format_number(run.narrow_end_um) + " um): " + run.stop_reason;
 }
 
-// Runs the fluid alone to its steady state; false if it did not get there.
-bool settle_fluid(lattice::FluidSolver& fluid, const CapillarySettings& settings,
-                  CapillaryRun& run) {
-  const auto steady = fluid.run_to_steady_state(
+// Runs the fluid alone to its steady state (across the run's processes, in slabs); false if it
+// did not get there.
+bool settle_fluid(lattice::FluidSolver& fluid, const coupling::CouplingParameters& coupling,
+                  const CapillarySettings& settings, CapillaryRun& run) {
+  const auto steady = parallel::run_to_steady_state(
+      coupling.processes, fluid, coupling.block_planes,
       {settings.fluid_tolerance, settings.fluid_check_interval_steps, settings.fluid_max_steps});
   run.fluid_settling_steps = steady.steps;
   if (steady.converged) return true;
@@ -421,7 +424,7 @@ CapillaryRun run_capillary(const mesh::TriangleMesh& cell_mesh, const CapillaryP
                                physics.units.to_lattice(PhysicalUnit::velocity_m_per_s,
                                                         settings.mean_inlet_velocity_m_per_s));
   try {
-    if (!settle_fluid(*fluid, settings, run)) return run;
+    if (!settle_fluid(*fluid, physics.coupling, settings, run)) return run;
   } catch (const RuntimeFailure& failure) {
     run.failure = std::string("fluid alone: ") + failure.what();
     return run;

@@ -21,6 +21,7 @@
 #include "geometry/wall_links.hpp"
 #include "membrane/membrane_model.hpp"
 #include "mesh/geometry.hpp"
+#include "parallel/distributed_fluid.hpp"
 
 namespace rbcsim::cases {
 namespace {
@@ -454,8 +455,10 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
       settings.plasma_mean_velocity_m_per_s / (settings.tube_diameter_um * 1e-6);
 
   auto fluid = tube_fluid(tube, physics.fluid, body_force_lu);
-  const auto steady =
-      fluid->run_to_steady_state({settings.fluid_tolerance, 100, settings.fluid_max_steps});
+  // Across the run's processes, in slabs.
+  const auto steady = parallel::run_to_steady_state(
+      physics.coupling.processes, *fluid, physics.coupling.block_planes,
+      {settings.fluid_tolerance, 100, settings.fluid_max_steps});
   run.fluid_settling_steps = steady.steps;
   if (!steady.converged) {
     run.failure = "the plasma alone did not reach its steady state in " +

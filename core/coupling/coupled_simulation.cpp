@@ -107,20 +107,7 @@ bool CoupledSimulation::on_any_process(bool local) const {
 
 void CoupledSimulation::gather_fluid() {
   if (!distributed_ || fluid_gathered_step_ == time_step_) return;
-  const parallel::Communicator& processes = parameters_.processes;
-  StateArchive gathered("the distributed fluid");
-  distributed_->save_state(gathered);  // on rank 0
-  // The undivided solver's own arrays name what to copy and their sizes.
-  StateArchive shape("the undivided fluid");
-  fluid_->save_state(shape);
-  StateArchive whole("the distributed fluid");
-  for (const auto& [name, values] : shape.arrays()) {
-    std::vector<double> array = processes.is_root() ? gathered.take(name, values.size())
-                                                    : std::vector<double>(values.size());
-    processes.broadcast_from_root(array);
-    whole.put(name, std::move(array));
-  }
-  fluid_->restore_state(whole);
+  distributed_->copy_state_into(*fluid_);
   fluid_gathered_step_ = time_step_;
 }
 

@@ -200,9 +200,43 @@ void FluidSolver::advance(std::size_t steps) {
   }
 }
 
-SteadyStateResult FluidSolver::run_to_steady_state(const SteadyStateCriterion& criterion) {
-  const auto node_count = static_cast<std::int64_t>(grid().node_count());
+double relative_velocity_change(const VelocityChangeSquared& maxima) {
+  const double change = std::sqrt(maxima.change);
+  const double speed = std::sqrt(maxima.speed);
+  return speed > 0.0 ? change / speed
+                     : (change > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+}
+
+VelocityChangeSquared FluidSolver::velocity_change_since(VectorField& previous,
+                                                         std::size_t node_begin,
+                                                         std::size_t node_end) const {
+  const auto begin = static_cast<std::int64_t>(node_begin);
+  const auto end = static_cast<std::int64_t>(node_end);
   const auto& kinds = setup_.boundaries.kinds();
+  double largest_change_squared = 0.0;
+  double largest_speed_squared = 0.0;
+#pragma omp parallel for schedule(static) if (grid().worth_threads()) \
+    reduction(max                                                     \
+              : largest_change_squared, largest_speed_squared)
+  for (std::int64_t node = begin; node < end; ++node) {
+    if (kinds[node] != 0) {
+      continue;
+    }
+    double change_squared = 0.0;
+    double speed_squared = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double u = arrays_.velocity[axis][node];
+      change_squared += (u - previous[axis][node]) * (u - previous[axis][node]);
+      speed_squared += u * u;
+      previous[axis][node] = u;
+    }
+    largest_change_squared = std::max(largest_change_squared, change_squared);
+    largest_speed_squared = std::max(largest_speed_squared, speed_squared);
+  }
+  return {largest_change_squared, largest_speed_squared};
+}
+
+SteadyStateResult FluidSolver::run_to_steady_state(const SteadyStateCriterion& criterion) {
   VectorField previous = arrays_.velocity;
   SteadyStateResult result;
   while (result.steps < criterion.max_steps) {
@@ -211,31 +245,8 @@ SteadyStateResult FluidSolver::run_to_steady_state(const SteadyStateCriterion& c
     advance(chunk);
     result.steps += chunk;
     require_finite_velocity();
-    double largest_change_squared = 0.0;
-    double largest_speed_squared = 0.0;
-#pragma omp parallel for schedule(static) if (grid().worth_threads()) \
-    reduction(max                                                     \
-              : largest_change_squared, largest_speed_squared)
-    for (std::int64_t node = 0; node < node_count; ++node) {
-      if (kinds[node] != 0) {
-        continue;
-      }
-      double change_squared = 0.0;
-      double speed_squared = 0.0;
-      for (int axis = 0; axis < 3; ++axis) {
-        const double u = arrays_.velocity[axis][node];
-        change_squared += (u - previous[axis][node]) * (u - previous[axis][node]);
-        speed_squared += u * u;
-        previous[axis][node] = u;
-      }
-      largest_change_squared = std::max(largest_change_squared, change_squared);
-      largest_speed_squared = std::max(largest_speed_squared, speed_squared);
-    }
-    const double change = std::sqrt(largest_change_squared);
-    const double speed = std::sqrt(largest_speed_squared);
     result.relative_velocity_change =
-        speed > 0.0 ? change / speed
-                    : (change > 0.0 ? std::numeric_limits<double>::infinity() : 0.0);
+        relative_velocity_change(velocity_change_since(previous, 0, grid().node_count()));
     if (result.relative_velocity_change <= criterion.relative_velocity_change) {
       result.converged = true;
       break;

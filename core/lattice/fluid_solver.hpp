@@ -79,6 +79,16 @@ struct SteadyStateResult {
   double relative_velocity_change = 0.0;
 };
 
+// Over some fluid nodes: the largest |u - u_previous|^2 and |u|^2 (lattice units). Maxima, so
+// that slabs' values combine exactly in any order (parallel/distributed_fluid.hpp).
+struct VelocityChangeSquared {
+  double change = 0.0;
+  double speed = 0.0;
+};
+// The criterion's measure from the maxima: max |u - u_previous| / max |u| (0 for a fluid at rest
+// that stayed at rest, infinity for one that started moving from rest).
+double relative_velocity_change(const VelocityChangeSquared& maxima);
+
 class FluidSolver {
  public:
   // Starts at rest at density 1, every node fluid. Throws rbcsim::InputError for an unknown
@@ -120,6 +130,10 @@ class FluidSolver {
   // Steps until the criterion holds or max_steps were taken. Throws rbcsim::RuntimeFailure on a
   // non-finite velocity, naming the step and the node.
   SteadyStateResult run_to_steady_state(const SteadyStateCriterion& criterion);
+  // run_to_steady_state's measure over the fluid nodes [node_begin, node_end) (grid order), and
+  // `previous` (a field of the grid's size) set to their velocity there.
+  VelocityChangeSquared velocity_change_since(VectorField& previous, std::size_t node_begin,
+                                              std::size_t node_end) const;
   // Throws rbcsim::RuntimeFailure, naming the step and the node, if a fluid node's velocity is
   // not finite (the flow went unstable).
   void require_finite_velocity() const;

@@ -329,6 +329,57 @@ void DistributedFluid::advance(std::size_t steps) {
   for (std::size_t s = 0; s < steps; ++s) step();
 }
 
+lattice::SteadyStateResult DistributedFluid::run_to_steady_state(
+    const lattice::SteadyStateCriterion& criterion) {
+  const lattice::LatticeGrid& grid = local_.grid();
+  // The slab's own planes, without the ghosts.
+  const std::size_t begin = grid.index(0, 0, kHaloPlanes);
+  const std::size_t end = grid.index(0, 0, grid.nz() - kHaloPlanes);
+  lattice::VectorField previous = local_.velocity();
+  lattice::SteadyStateResult result;
+  while (result.steps < criterion.max_steps) {
+    const std::size_t chunk =
+        std::min(criterion.check_interval, criterion.max_steps - result.steps);
+    advance(chunk);
+    result.steps += chunk;
+    require_finite_velocity();
+    const auto local = local_.velocity_change_since(previous, begin, end);
+    result.relative_velocity_change = lattice::relative_velocity_change(
+        {communicator_.max(local.change), communicator_.max(local.speed)});
+    if (result.relative_velocity_change <= criterion.relative_velocity_change) {
+      result.converged = true;
+      break;
+    }
+  }
+  return result;
+}
+
+void DistributedFluid::copy_state_into(lattice::FluidSolver& whole) const {
+  StateArchive gathered("the distributed fluid");
+  save_state(gathered);  // on rank 0
+  // The undivided solver's own arrays name what to copy and their sizes.
+  StateArchive shape("the undivided fluid");
+  whole.save_state(shape);
+  StateArchive copied("the distributed fluid");
+  for (const auto& [name, values] : shape.arrays()) {
+    std::vector<double> array = communicator_.is_root() ? gathered.take(name, values.size())
+                                                        : std::vector<double>(values.size());
+    communicator_.broadcast_from_root(array);
+    copied.put(name, std::move(array));
+  }
+  whole.restore_state(copied);
+}
+
+lattice::SteadyStateResult run_to_steady_state(const Communicator& communicator,
+                                               lattice::FluidSolver& whole, int block_planes,
+                                               const lattice::SteadyStateCriterion& criterion) {
+  if (communicator.size() == 1) return whole.run_to_steady_state(criterion);
+  DistributedFluid distributed(communicator, whole, block_planes);
+  const auto result = distributed.run_to_steady_state(criterion);
+  distributed.copy_state_into(whole);
+  return result;
+}
+
 double DistributedFluid::total_mass() const {
   const lattice::LatticeGrid& grid = local_.grid();
   const int slab = z_end() - z_begin();

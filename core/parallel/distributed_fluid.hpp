@@ -122,6 +122,12 @@ class DistributedFluid {
   void step();
   void advance(std::size_t steps);
 
+  // Collective: lattice::FluidSolver::run_to_steady_state across the slabs, each measuring its own
+  // planes and the maxima combined exactly: the same steps, the same state and the same result as
+  // the undivided solver's, on every process. Throws rbcsim::RuntimeFailure on every process for a
+  // non-finite velocity anywhere.
+  lattice::SteadyStateResult run_to_steady_state(const lattice::SteadyStateCriterion& criterion);
+
   // Collective. The sum of the populations of every fluid node: per plane in grid order, the
   // planes in global order on rank 0, the same value returned on every process.
   double total_mass() const;
@@ -152,6 +158,9 @@ class DistributedFluid {
   void read_checkpoint(const std::filesystem::path& file, std::string_view config_fingerprint);
 
   const HaloCounters& halo_counters() const { return counters_; }
+  // Collective: the state (save_state's arrays) copied into `whole`, an undivided solver of the
+  // same lattice set up the same way, on every process.
+  void copy_state_into(lattice::FluidSolver& whole) const;
 
  private:
   // A per-node field of the local solver with `components` arrays of the local node count, back
@@ -193,5 +202,13 @@ class DistributedFluid {
   bool force_in_halo_ = false;  // some process has applied a force: the halo carries it from now
   HaloCounters counters_;
 };
+
+// Collective: `whole` (the same on every process) run to its steady state across the processes
+// of `communicator` in blocks of `block_planes` planes, and the state copied back into `whole` on
+// every process: what whole.run_to_steady_state(criterion) gives on one process, bit for bit, in
+// a fraction of its time. On one process it is that call.
+lattice::SteadyStateResult run_to_steady_state(const Communicator& communicator,
+                                               lattice::FluidSolver& whole, int block_planes,
+                                               const lattice::SteadyStateCriterion& criterion);
 
 }  // namespace rbcsim::parallel

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -120,6 +121,46 @@ TEST(ProcessesCheckpoint, WrittenOnOneResumesOnAllBitForBit) {
     EXPECT_EQ(state, expected) << "written on one, resumed on " << world.size();
     std::filesystem::remove(file);
   }
+}
+
+// A channel driven by a body force from rest to its steady state (the capillary's and the tube
+// suspension's set-up), with an obstacle in two planes so that each slab's flow is its own (a
+// slab deciding on its own measure stops at another step), in slabs: the same number of steps, the
+// same measure and the same state, bit for bit, on every process, as the undivided solver's
+// run_to_steady_state.
+TEST(ProcessesSteadyState, AChannelSettlesAsTheUndividedSolverBitForBit) {
+  const lattice::LatticeGrid grid(5, 9, 8);
+  const auto channel = [&grid] {
+    lattice::FluidParameters parameters;
+    parameters.body_force = {2e-6, 0.0, 0.0};
+    auto solver = std::make_unique<lattice::FluidSolver>(grid, parameters);
+    for (int z = 0; z < grid.nz(); ++z) {
+      for (int x = 0; x < grid.nx(); ++x) {
+        solver->set_wall(grid.index(x, 0, z));
+        solver->set_wall(grid.index(x, grid.ny() - 1, z));
+      }
+    }
+    for (int z = 2; z < 4; ++z) {
+      for (int y = 3; y < 6; ++y) solver->set_wall(grid.index(2, y, z));
+    }
+    return solver;
+  };
+  const lattice::SteadyStateCriterion criterion{1e-8, 20, 20000};
+  const Communicator world = Communicator::world();
+  auto settled = channel();
+  const auto result = run_to_steady_state(world, *settled, 2, criterion);
+  auto alone = channel();
+  const auto expected = alone->run_to_steady_state(criterion);
+  ASSERT_TRUE(expected.converged);
+  // Many checks, not a flow steady at the first: the slabs measure and agree again and again.
+  EXPECT_GT(expected.steps, 10 * criterion.check_interval) << expected.steps;
+  EXPECT_TRUE(result.converged);
+  EXPECT_EQ(result.steps, expected.steps) << "on " << world.size() << " processes";
+  EXPECT_EQ(result.relative_velocity_change, expected.relative_velocity_change);
+  EXPECT_EQ(settled->stored_populations(0, grid.node_count()),
+            alone->stored_populations(0, grid.node_count()))
+      << "process " << world.rank() << " of " << world.size();
+  EXPECT_EQ(settled->time(), alone->time());
 }
 
 }  // namespace
