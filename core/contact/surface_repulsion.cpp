@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace rbcsim::contact {
@@ -159,6 +160,59 @@ struct NearestSurfaceSearch {
   }
 };
 
+// The records of every vertex, in the order of (vertex, other cell).
+std::vector<SurfaceContact> flattened(const std::vector<std::vector<SurfaceContact>>& found) {
+  std::vector<SurfaceContact> contacts;
+  for (const auto& of_vertex : found)
+    contacts.insert(contacts.end(), of_vertex.begin(), of_vertex.end());
+  return contacts;
+}
+
+// A record as values that travel between processes exactly (indices below 2^32 are exact in a
+// double).
+constexpr std::size_t kRecordValues = 11;
+
+void append_record(std::vector<double>& values, const SurfaceContact& contact) {
+  values.insert(values.end(),
+                {static_cast<double>(contact.vertex), static_cast<double>(contact.other_cell),
+                 static_cast<double>(contact.triangle), contact.weights[0], contact.weights[1],
+                 contact.weights[2], contact.force_pN.x(), contact.force_pN.y(),
+                 contact.force_pN.z(), contact.distance_um, contact.capped ? 1.0 : 0.0});
+}
+
+SurfaceContact record_at(std::span<const double> v) {
+  return {static_cast<std::uint32_t>(v[0]),
+          static_cast<std::uint32_t>(v[1]),
+          static_cast<std::uint32_t>(v[2]),
+          {v[3], v[4], v[5]},
+          Vec3(v[6], v[7], v[8]),
+          v[9],
+          v[10] != 0.0};
+}
+
+// Every process's records, in the order of (vertex, other cell): the order one process adds them
+// in, whichever process found them.
+std::vector<SurfaceContact> shared_contacts(const std::vector<std::vector<SurfaceContact>>& found,
+                                            const ContactSplit& split) {
+  std::vector<double> mine;
+  for (const auto& of_vertex : found) {
+    for (const auto& contact : of_vertex) append_record(mine, contact);
+  }
+  const std::vector<double> all = split.share(mine);
+  if (all.size() % kRecordValues != 0) {
+    throw std::logic_error("surface contact: shared records of " + std::to_string(all.size()) +
+                           " values");
+  }
+  std::vector<SurfaceContact> contacts;
+  for (std::size_t r = 0; r < all.size(); r += kRecordValues) {
+    contacts.push_back(record_at(std::span<const double>(all).subspan(r, kRecordValues)));
+  }
+  std::sort(contacts.begin(), contacts.end(), [](const auto& a, const auto& b) {
+    return a.vertex != b.vertex ? a.vertex < b.vertex : a.other_cell < b.other_cell;
+  });
+  return contacts;
+}
+
 }  // namespace
 
 std::array<double, 3> nearest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b,
@@ -192,12 +246,10 @@ std::array<double, 3> nearest_on_triangle(const Vec3& p, const Vec3& a, const Ve
   return {1.0 - v - w, v, w};
 }
 
-ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
-                                             std::span<const std::uint32_t> owner,
-                                             const ContactSurfaces& surfaces,
-                                             const ContactParameters& parameters,
-                                             const PeriodicBox& box, std::span<Vec3> forces_pN,
-                                             ContactWorkspace& workspace) {
+ContactStatistics add_surface_contact_forces(
+    std::span<const Vec3> positions_um, std::span<const std::uint32_t> owner,
+    const ContactSurfaces& surfaces, const ContactParameters& parameters, const PeriodicBox& box,
+    std::span<Vec3> forces_pN, ContactWorkspace& workspace, const ContactSplit* split) {
   if (owner.size() != positions_um.size() || forces_pN.size() != positions_um.size() ||
       surfaces.vertex_triangle_offsets.size() != positions_um.size() + 1) {
     throw std::invalid_argument("surface contact: one owner, force and triangle row per position");
@@ -217,6 +269,7 @@ ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
   const double reach =
       (range + longest_edge_um(positions_um, surfaces) / std::sqrt(3.0)) * (1.0 + 1e-9);
   select_candidates(positions_um, owner, reach, box, workspace);
+  // Every process has the same candidates: all return here, or none.
   if (workspace.candidates.empty()) return statistics;
   const std::span<const std::uint32_t> kept = workspace.candidates;
   const std::span<const std::uint32_t> kept_owner = workspace.candidate_owners;
@@ -234,6 +287,7 @@ ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
     for (std::ptrdiff_t signed_k = 0; signed_k < count; ++signed_k) {
       const auto k = static_cast<std::size_t>(signed_k);
       const std::uint32_t i = kept[k];
+      if (split != nullptr && !split->searches_cell(owner[i])) continue;
       // Per other cell (in order of first meeting), its nearest surface point.
       std::vector<std::pair<std::uint32_t, Nearest>> nearest;
       search.find(k, tried_by, nearest);
@@ -257,19 +311,19 @@ ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
                 [](const auto& a, const auto& b) { return a.other_cell < b.other_cell; });
     }
   }
+  const std::vector<SurfaceContact> contacts =
+      split != nullptr ? shared_contacts(found, *split) : flattened(found);
   // Serially, in the order of (vertex, other cell): each vertex's push and its reaction on the
   // other surface's triangle.
-  for (const auto& contacts : found) {
-    for (const auto& contact : contacts) {
-      forces_pN[contact.vertex] += contact.force_pN;
-      const auto& triangle = surfaces.triangles[contact.triangle];
-      for (std::size_t c = 0; c < 3; ++c)
-        forces_pN[triangle[c]] -= contact.weights[c] * contact.force_pN;
-      ++statistics.pairs_in_range;
-      if (contact.distance_um < 0.25 * range) ++statistics.close_pairs;
-      if (contact.capped) ++statistics.capped_pushes;
-      statistics.closest_um = std::min(statistics.closest_um, contact.distance_um);
-    }
+  for (const auto& contact : contacts) {
+    forces_pN[contact.vertex] += contact.force_pN;
+    const auto& triangle = surfaces.triangles[contact.triangle];
+    for (std::size_t c = 0; c < 3; ++c)
+      forces_pN[triangle[c]] -= contact.weights[c] * contact.force_pN;
+    ++statistics.pairs_in_range;
+    if (contact.distance_um < 0.25 * range) ++statistics.close_pairs;
+    if (contact.capped) ++statistics.capped_pushes;
+    statistics.closest_um = std::min(statistics.closest_um, contact.distance_um);
   }
   return statistics;
 }

@@ -23,12 +23,16 @@
 // round-off (not bit for bit, unlike the vertex pairs).
 //
 // Deterministic: the nearest points are found per vertex in parallel, each writing only its own
-// record; the forces are then added serially in the order of (vertex, other cell).
+// record; the forces are then added serially in the order of (vertex, other cell). Across
+// processes (ContactSplit) each searches for the vertices of its own cells, and every process adds
+// everyone's records in that same order: the forces of one process, bit for bit.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
+#include <vector>
 
 #include "contact/cell_repulsion.hpp"
 
@@ -43,14 +47,22 @@ struct ContactSurfaces {
   std::span<const std::uint32_t> vertex_triangles;
 };
 
+// The nearest-point search shared between processes that hold the same positions: this process
+// searches for the vertices of the cells `searches_cell` names, and `share` hands every process
+// the values all of them passed (each process's in one piece, in any order of processes), as
+// parallel::Communicator::gather_to_all does. The contact library stays free of MPI.
+struct ContactSplit {
+  std::function<bool(std::uint32_t cell)> searches_cell;
+  std::function<std::vector<double>(std::span<const double>)> share;
+};
+
 // Adds the surface contact forces (force_at_contact_pN is F_half here) to forces_pN. Statistics
-// as the vertex law's, counting (vertex, other cell) contacts within the range.
-ContactStatistics add_surface_contact_forces(std::span<const Vec3> positions_um,
-                                             std::span<const std::uint32_t> owner,
-                                             const ContactSurfaces& surfaces,
-                                             const ContactParameters& parameters,
-                                             const PeriodicBox& box, std::span<Vec3> forces_pN,
-                                             ContactWorkspace& workspace);
+// as the vertex law's, counting (vertex, other cell) contacts within the range. With `split`,
+// the search is shared (every process must call it, with the same positions).
+ContactStatistics add_surface_contact_forces(
+    std::span<const Vec3> positions_um, std::span<const std::uint32_t> owner,
+    const ContactSurfaces& surfaces, const ContactParameters& parameters, const PeriodicBox& box,
+    std::span<Vec3> forces_pN, ContactWorkspace& workspace, const ContactSplit* split = nullptr);
 
 // The point of triangle (a, b, c) nearest to p, as barycentric weights of a, b, c (Ericson,
 // Real-Time Collision Detection, 2005, 5.1.5).

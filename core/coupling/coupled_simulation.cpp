@@ -208,9 +208,18 @@ void CoupledSimulation::add_contact_forces() {
     }
     const contact::ContactSurfaces surfaces{contact_triangles_, contact_vertex_triangle_offsets_,
                                             contact_vertex_triangles_};
+    // Across processes each searches for the vertices of the cells it owns (owns_cell).
+    std::vector<char> owned(cells_.size(), 1);
+    if (distributed_) {
+      for (std::size_t k = 0; k < cells_.size(); ++k) owned[k] = owns_cell(k) ? 1 : 0;
+    }
+    const parallel::Communicator& processes = parameters_.processes;
+    const contact::ContactSplit split{
+        [&owned](std::uint32_t cell) { return owned[cell] != 0; },
+        [&processes](std::span<const double> mine) { return processes.gather_to_all(mine); }};
     contact_statistics_ = contact::add_surface_contact_forces(
         contact_positions_um_, contact_owners_, surfaces, contact_, contact_box_,
-        contact_forces_pN_, contact_workspace_);
+        contact_forces_pN_, contact_workspace_, distributed_ ? &split : nullptr);
   } else {
     contact_statistics_ =
         contact::add_cell_contact_forces(contact_positions_um_, contact_owners_, contact_,

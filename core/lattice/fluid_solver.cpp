@@ -236,23 +236,32 @@ VelocityChangeSquared FluidSolver::velocity_change_since(VectorField& previous,
   return {largest_change_squared, largest_speed_squared};
 }
 
-SteadyStateResult FluidSolver::run_to_steady_state(const SteadyStateCriterion& criterion) {
-  VectorField previous = arrays_.velocity;
+SteadyStateResult run_until_steady(const SteadyStateCriterion& criterion,
+                                   const std::function<void(std::size_t)>& advance,
+                                   const std::function<double()>& measure) {
   SteadyStateResult result;
   while (result.steps < criterion.max_steps) {
     const std::size_t chunk =
         std::min(criterion.check_interval, criterion.max_steps - result.steps);
     advance(chunk);
     result.steps += chunk;
-    require_finite_velocity();
-    result.relative_velocity_change =
-        relative_velocity_change(velocity_change_since(previous, 0, grid().node_count()));
+    result.relative_velocity_change = measure();
     if (result.relative_velocity_change <= criterion.relative_velocity_change) {
       result.converged = true;
       break;
     }
   }
   return result;
+}
+
+SteadyStateResult FluidSolver::run_to_steady_state(const SteadyStateCriterion& criterion) {
+  VectorField previous = arrays_.velocity;
+  return run_until_steady(
+      criterion, [this](std::size_t steps) { advance(steps); },
+      [this, &previous] {
+        require_finite_velocity();
+        return relative_velocity_change(velocity_change_since(previous, 0, grid().node_count()));
+      });
 }
 
 void FluidSolver::require_finite_velocity() const {

@@ -36,6 +36,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -88,6 +89,12 @@ struct VelocityChangeSquared {
 // The criterion's measure from the maxima: max |u - u_previous| / max |u| (0 for a fluid at rest
 // that stayed at rest, infinity for one that started moving from rest).
 double relative_velocity_change(const VelocityChangeSquared& maxima);
+// run_to_steady_state's loop for any solver: advance(steps) by check intervals, each followed by
+// measure() (the relative velocity change, having checked the velocity is finite), until the
+// criterion holds or max_steps were taken.
+SteadyStateResult run_until_steady(const SteadyStateCriterion& criterion,
+                                   const std::function<void(std::size_t)>& advance,
+                                   const std::function<double()>& measure);
 
 class FluidSolver {
  public:

@@ -336,22 +336,14 @@ lattice::SteadyStateResult DistributedFluid::run_to_steady_state(
   const std::size_t begin = grid.index(0, 0, kHaloPlanes);
   const std::size_t end = grid.index(0, 0, grid.nz() - kHaloPlanes);
   lattice::VectorField previous = local_.velocity();
-  lattice::SteadyStateResult result;
-  while (result.steps < criterion.max_steps) {
-    const std::size_t chunk =
-        std::min(criterion.check_interval, criterion.max_steps - result.steps);
-    advance(chunk);
-    result.steps += chunk;
-    require_finite_velocity();
-    const auto local = local_.velocity_change_since(previous, begin, end);
-    result.relative_velocity_change = lattice::relative_velocity_change(
-        {communicator_.max(local.change), communicator_.max(local.speed)});
-    if (result.relative_velocity_change <= criterion.relative_velocity_change) {
-      result.converged = true;
-      break;
-    }
-  }
-  return result;
+  return lattice::run_until_steady(
+      criterion, [this](std::size_t steps) { advance(steps); },
+      [&] {
+        require_finite_velocity();
+        const auto local = local_.velocity_change_since(previous, begin, end);
+        return lattice::relative_velocity_change(
+            {communicator_.max(local.change), communicator_.max(local.speed)});
+      });
 }
 
 void DistributedFluid::copy_state_into(lattice::FluidSolver& whole) const {

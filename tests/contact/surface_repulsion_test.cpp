@@ -309,5 +309,40 @@ TEST(SurfaceContact, ConservesMomentumAndIsThreadCountIndependent) {
   EXPECT_EQ(forces[0], forces[1]);
 }
 
+// The search shared as between two processes holding the same positions, each searching for one
+// patch: here both "processes" in turn, the second handed the first's records ahead of its own
+// (the order an all-gather may deliver). The forces are the unshared evaluation's, bit for bit.
+TEST(SurfaceContact, ASearchSharedBetweenProcessesAddsUpAsOneProcess) {
+  const auto patches = wobbled_patches(0.07, 0.03, 3);
+  const ContactParameters parameters{5.0, 0.75, ContactLaw::surface};
+  const auto evaluate = [&](const ContactSplit* split) {
+    std::vector<Vec3> forces(patches.positions_um.size(), Vec3::Zero());
+    ContactWorkspace workspace;
+    const auto statistics =
+        add_surface_contact_forces(patches.positions_um, patches.owner, patches.surfaces(),
+                                   parameters, {}, forces, workspace, split);
+    return std::make_pair(forces, statistics.pairs_in_range);
+  };
+  const auto [alone, pairs] = evaluate(nullptr);
+  ASSERT_GT(pairs, 100u);
+  std::vector<double> of_b;
+  const ContactSplit searching_b{[](std::uint32_t cell) { return cell == 1; },
+                                 [&of_b](std::span<const double> mine) {
+                                   of_b.assign(mine.begin(), mine.end());
+                                   return of_b;
+                                 }};
+  evaluate(&searching_b);
+  ASSERT_FALSE(of_b.empty());
+  const ContactSplit searching_a{[](std::uint32_t cell) { return cell == 0; },
+                                 [&of_b](std::span<const double> mine) {
+                                   std::vector<double> all = of_b;
+                                   all.insert(all.end(), mine.begin(), mine.end());
+                                   return all;
+                                 }};
+  const auto [shared, shared_pairs] = evaluate(&searching_a);
+  EXPECT_EQ(shared_pairs, pairs);
+  EXPECT_EQ(shared, alone);
+}
+
 }  // namespace
 }  // namespace rbcsim::contact

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/cell_repulsion.hpp"
 #include "coupling/checkpoint.hpp"
 #include "coupling/coupled_simulation.hpp"
 #include "coupling/snapshot.hpp"
@@ -44,7 +45,8 @@ std::unique_ptr<lattice::FluidSolver> sheared_box() {
 
 // 20 spheres of radius 1 um (42 vertices) on a 3 x 2 x 4 lattice of centres, away from the sliding
 // plane (the IBM does not reach across it); the first rows of z straddle the periodic seam.
-std::unique_ptr<coupling::CoupledSimulation> suspension(const Communicator& processes) {
+std::unique_ptr<coupling::CoupledSimulation> suspension(
+    const Communicator& processes, contact::ContactLaw law = contact::ContactLaw::vertex) {
   coupling::CouplingParameters coupling;
   coupling.processes = processes;
   coupling.block_planes = 2;
@@ -66,7 +68,11 @@ std::unique_ptr<coupling::CoupledSimulation> suspension(const Communicator& proc
     const double direction = cell % 2 == 0 ? 1.0 : -1.0;
     for (Vec3& force : f) force.z() += direction * kPushPerVertexPN;
   });
-  simulation->set_cell_contact({50.0, 0.5}, "test");
+  // The surface law's force is F(r/2) and held at its cap.
+  simulation->set_cell_contact(law == contact::ContactLaw::vertex
+                                   ? contact::ContactParameters{50.0, 0.5}
+                                   : contact::ContactParameters{10.0, 0.5, law, 100.0},
+                               "test");
   return simulation;
 }
 
@@ -94,22 +100,38 @@ std::size_t differing(const std::vector<double>& a, const std::vector<double>& b
   return count;
 }
 
-TEST(ProcessesCoupledSimulation, TwentyCellsMoveAsOnTheUndividedLatticeBitForBit) {
+// The run on every process against the undivided one on rank 0, after kSteps steps.
+void expect_undivided_run(contact::ContactLaw law) {
   constexpr std::size_t kSteps = 40;
   const Communicator world = Communicator::world();
-  auto distributed = suspension(world);
+  auto distributed = suspension(world, law);
   EXPECT_EQ(distributed->distributed(), world.size() > 1);
   const Vec3 start_lu = distributed->cell(0).centroid_lu();
-  advance(*distributed, kSteps);
+  std::size_t steps_in_contact = 0;
+  for (std::size_t step = 0; step < kSteps; ++step) {
+    distributed->step();
+    if (distributed->contact_statistics().pairs_in_range > 0) ++steps_in_contact;
+  }
   const auto state = state_of(*distributed);
   if (!world.is_root()) return;
-  auto undivided = suspension(Communicator::self());
+  auto undivided = suspension(Communicator::self(), law);
   advance(*undivided, kSteps);
   const auto expected = state_of(*undivided);
-  // The cells moved (pushed along z, carried along x by the shear), not a still state.
+  // The cells moved (pushed along z, carried along x by the shear), not a still state, and
+  // touched.
   EXPECT_GT((undivided->cell(0).centroid_lu() - start_lu).norm(), 0.01);
+  EXPECT_GT(steps_in_contact, 0u);
   EXPECT_EQ(differing(state, expected), 0u)
       << "of " << expected.size() << " values on " << world.size() << " processes";
+}
+
+TEST(ProcessesCoupledSimulation, TwentyCellsMoveAsOnTheUndividedLatticeBitForBit) {
+  expect_undivided_run(contact::ContactLaw::vertex);
+}
+
+// The surface law, whose nearest-point search each process does for the cells it owns.
+TEST(ProcessesCoupledSimulation, TwentyCellsInSurfaceContactMoveAsOnTheUndividedLatticeBitForBit) {
+  expect_undivided_run(contact::ContactLaw::surface);
 }
 
 // Written on every process of the run, resumed on the first half of them (4 -> 2, 3 -> 2, 2 -> 1):
