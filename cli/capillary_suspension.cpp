@@ -137,7 +137,7 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
       setup::fluid_parameters_from(simulated),
       setup::coupling_parameters_from(simulated, directory.path()),
       config::make_unit_converter(simulated)};
-  const auto intervals = setup::snapshot_intervals_from(simulated, physics.units);
+  const auto intervals = setup::snapshot_intervals_from(simulated, physics.units, directory.path());
   const Progress progress(common);
   bool started = false;
   auto run = cases::run_suspension(
@@ -178,10 +178,12 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
                         {"discharge_hematocrit", run.averages.discharge_hematocrit},
                         {"tube_hematocrit", run.averages.tube_hematocrit},
                         {"cell_free_layer_um", run.averages.cell_free_layer_um}};
-  result["files"] = {
-      {"config", "config.json"},         {"timeseries", "suspension_timeseries.csv"},
-      {"cells", "cells_timeseries.csv"}, {"hematocrit_profile", "hematocrit_profile.csv"},
-      {"membrane", "cells.pvd"},         {"fluid", "fluid.pvd"}};
+  result["files"] = {{"config", "config.json"},
+                     {"timeseries", "suspension_timeseries.csv"},
+                     {"cells", "cells_timeseries.csv"},
+                     {"hematocrit_profile", "hematocrit_profile.csv"},
+                     {"membrane", coupling::membrane_series_file(intervals.format, true)},
+                     {"fluid", coupling::fluid_series_file(intervals.format)}};
   directory.write_json("result.json", result);
   if (common.json) {
     std::cout << result.dump(2) << '\n';

@@ -181,7 +181,7 @@ nlohmann::ordered_json result_section(const CapillaryContext& c, const cases::Ca
 cases::CapillaryRun run_release(const CapillaryContext& c, const mesh::TriangleMesh& cell_mesh,
                                 const std::filesystem::path& subdirectory, bool& started) {
   const auto output = c.directory.path() / subdirectory;
-  const auto intervals = setup::snapshot_intervals_from(c.simulated, c.physics.units);
+  const auto intervals = setup::snapshot_intervals_from(c.simulated, c.physics.units, output);
   const Progress progress(c.options.common);
   auto physics = c.physics;  // an instability's dump goes to this release's directory
   physics.coupling.run_directory = output;
@@ -330,11 +330,14 @@ void run_capillary_command(const CapillaryOptions& options) {
                             : directory.result_head(failure.empty());
   if (!failure.empty()) result["failure"] = failure;
   result["headline"] = headline(run);
+  const std::string first_release = count == 1 ? "" : "orientation_0/";
+  const auto format =
+      setup::snapshot_format_from(context.simulated, directory.path() / first_release);
   result["files"] = {{"config", "config.json"},
                      {"timeseries", count == 1 ? "capillary_timeseries.csv"
                                                : "orientation_0/capillary_timeseries.csv"},
-                     {"membrane", count == 1 ? "cell0.pvd" : "orientation_0/cell0.pvd"},
-                     {"fluid", count == 1 ? "fluid.pvd" : "orientation_0/fluid.pvd"}};
+                     {"membrane", first_release + coupling::membrane_series_file(format, false)},
+                     {"fluid", first_release + coupling::fluid_series_file(format)}};
   result["capillary"] = sections.front();
   result["phase_ms_per_step"] = cases::phase_ms_per_step_json(run.phase_times);
   if (count > 1) {

@@ -311,7 +311,7 @@ void run_sheared_suspension_command(const config::ConfigRequest& request,
     const cases::SuspensionPhysics physics{setup::fluid_parameters_from(simulated),
                                            setup::coupling_parameters_from(simulated, rate_path),
                                            config::make_unit_converter(simulated)};
-    const auto intervals = setup::snapshot_intervals_from(simulated, physics.units);
+    const auto intervals = setup::snapshot_intervals_from(simulated, physics.units, rate_path);
     point.run = cases::run_sheared_suspension(
         morphologies, cells, physics, settings, [&](coupling::CoupledSimulation& simulation) {
           std::filesystem::create_directories(rate_path);
@@ -377,12 +377,14 @@ void run_sheared_suspension_command(const config::ConfigRequest& request,
     }
   }
   result["headline"] = headline;
+  const auto format =
+      setup::snapshot_format_from(config, directory.path() / cases::shear_rate_directory(0));
   result["files"] = {{"config", "config.json"},
                      {"table", "sheared_suspension.csv"},
                      {"timeseries", "rate_<i>/suspension_timeseries.csv"},
                      {"cells", "rate_<i>/cells_timeseries.csv"},
-                     {"membrane", "rate_<i>/cells.pvd"},
-                     {"fluid", "rate_<i>/fluid.pvd"}};
+                     {"membrane", "rate_<i>/" + coupling::membrane_series_file(format, true)},
+                     {"fluid", "rate_<i>/" + coupling::fluid_series_file(format)}};
   directory.write_json("result.json", result);
   if (common.json) {
     std::cout << result.dump(2) << '\n';

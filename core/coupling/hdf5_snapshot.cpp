@@ -6,8 +6,10 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <system_error>
 #include <vector>
 
+#include "common/errors.hpp"
 #include "coupling/snapshot.hpp"
 #include "io/xdmf_series.hpp"
 #include "parallel/distributed_fluid.hpp"
@@ -68,10 +70,17 @@ const parallel::Communicator& processes(const CoupledSimulation& simulation) {
   return simulation.parameters().processes;
 }
 
-// The h5/ directory, made by rank 0 before any process opens a file in it.
+// The h5/ directory, made by rank 0 before any process opens a file in it; a failure throws on
+// every process.
 void make_h5_directory(const Hdf5OutputState& state, const CoupledSimulation& simulation) {
-  if (processes(simulation).is_root()) std::filesystem::create_directories(state.directory / "h5");
-  processes(simulation).barrier();
+  std::error_code made;
+  if (processes(simulation).is_root()) {
+    std::filesystem::create_directories(state.directory / "h5", made);
+  }
+  if (processes(simulation).any(static_cast<bool>(made))) {
+    throw RuntimeFailure("hdf5 snapshot: cannot create " + (state.directory / "h5").string() +
+                         (made ? ": " + made.message() : ""));
+  }
 }
 
 // This process's cells, their rows in the global vertex and triangle order, and their values.

@@ -209,6 +209,15 @@ void add_vtk_output(CoupledSimulation& simulation, const std::filesystem::path& 
   }
 }
 
+std::string membrane_series_file(SnapshotFormat format, bool suspension) {
+  if (format == SnapshotFormat::hdf5) return "cells.xdmf";
+  return suspension ? "cells.pvd" : "cell0.pvd";
+}
+
+std::string fluid_series_file(SnapshotFormat format) {
+  return format == SnapshotFormat::hdf5 ? "fluid.xdmf" : "fluid.pvd";
+}
+
 void add_snapshot_output(CoupledSimulation& simulation, const std::filesystem::path& directory,
                          const SnapshotIntervals& intervals,
                          std::span<const std::int32_t> cell_kinds) {

@@ -75,6 +75,11 @@ void add_hdf5_output(CoupledSimulation& simulation, const std::filesystem::path&
                      const SnapshotIntervals& intervals,
                      std::span<const std::int32_t> cell_kinds = {});
 
+// The series a run's snapshots are listed in, relative to its directory: the membrane's
+// (cell0.pvd for one cell's own series, cells.pvd for a suspension's, cells.xdmf) and the fluid's.
+std::string membrane_series_file(SnapshotFormat format, bool suspension);
+std::string fluid_series_file(SnapshotFormat format);
+
 // add_vtk_output or add_hdf5_output, as intervals.format says.
 void add_snapshot_output(CoupledSimulation& simulation, const std::filesystem::path& directory,
                          const SnapshotIntervals& intervals,

@@ -120,7 +120,19 @@ Hdf5File::~Hdf5File() {
 void Hdf5File::write(const std::string& name, std::span<const std::size_t> shape,
                      std::span<const Rows> rows, const void* values, std::size_t count,
                      Element element) {
-  check_rows(shape, rows, count, name);
+  // Every process throws, or none: one process leaving the collective calls below would leave the
+  // others waiting in them.
+  std::string problem;
+  try {
+    check_rows(shape, rows, count, name);
+  } catch (const std::invalid_argument& error) {
+    problem = error.what();
+  }
+  if (communicator_.any(!problem.empty())) {
+    throw std::invalid_argument(problem.empty() ? "Hdf5File: another process's rows of dataset " +
+                                                      name + " are not whole rows of its shape"
+                                                : problem);
+  }
   std::vector<hsize_t> dimensions(shape.begin(), shape.end());
   const auto rank = static_cast<int>(dimensions.size());
   Id file_space(checked(H5Screate_simple(rank, dimensions.data(), nullptr), "a dataspace", path_),
@@ -160,22 +172,31 @@ void Hdf5File::write(const std::string& name, std::span<const std::size_t> shape
   if (comm_of(communicator_) != nullptr) {
     check(H5Pset_dxpl_mpio(transfer.get(), H5FD_MPIO_COLLECTIVE), "collective writes", path_);
   }
-  check(H5Dwrite(dataset.get(), memory_type, memory_space.get(), file_space.get(), transfer.get(),
-                 values),
-        ("writing dataset " + name).c_str(), path_);
+  const herr_t written = H5Dwrite(dataset.get(), memory_type, memory_space.get(), file_space.get(),
+                                  transfer.get(), values);
+  if (communicator_.any(written < 0)) {
+    throw RuntimeFailure("hdf5: writing dataset " + name + " failed for " + partial_.string() +
+                         (written < 0 ? "" : " (on another process)"));
+  }
 }
 
 void Hdf5File::close() {
   if (file_ < 0) return;
   const hid_t file = file_;
   file_ = -1;
-  if (H5Fclose(file) < 0) {
-    if (communicator_.is_root()) std::filesystem::remove(partial_);
+  // Agreed (any()) after the close, so that every process's part is in the file, and after the
+  // rename, so that the file is there for whoever reads it next; a failure throws everywhere.
+  if (communicator_.any(H5Fclose(file) < 0)) {
+    std::error_code ignored;
+    if (communicator_.is_root()) std::filesystem::remove(partial_, ignored);
     throw RuntimeFailure("hdf5: closing " + partial_.string() + " failed");
   }
-  communicator_.barrier();  // every process's part is in the file
-  if (communicator_.is_root()) std::filesystem::rename(partial_, path_);
-  communicator_.barrier();  // the file is there for whoever reads it next
+  std::error_code renamed;
+  if (communicator_.is_root()) std::filesystem::rename(partial_, path_, renamed);
+  if (communicator_.any(static_cast<bool>(renamed))) {
+    throw RuntimeFailure("hdf5: renaming " + partial_.string() + " to " + path_.string() +
+                         " failed" + (renamed ? ": " + renamed.message() : ""));
+  }
 }
 
 #else  // without HDF5

@@ -9,6 +9,9 @@
 // file appears complete or not at all (io/atomic_file.hpp): it is written as <path>.partial and
 // renamed when closed.
 //
+// A failure on one process (rows that do not fit, a write, the close) throws on every process, so
+// that none is left waiting in a collective call.
+//
 // Built with RBCSIM_HDF5 (Debian's libhdf5-openmpi-dev); without it the constructor throws
 // rbcsim::InputError and built_with_hdf5() says so, for the option that asks for it to refuse
 // early.

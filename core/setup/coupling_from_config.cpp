@@ -75,23 +75,40 @@ void require_runs_across_processes(const config::Config& config, bool curved_wal
   }
 }
 
-coupling::SnapshotFormat snapshot_format_from(const config::Config& config) {
+coupling::SnapshotFormat snapshot_format_from(const config::Config& config,
+                                              const std::filesystem::path& directory) {
   const std::string format = config.string("output.format");
-  if (format == "hdf5" && !parallel::built_with_hdf5()) {
-    throw InputError("output.format",
-                     "hdf5: this rbcsim was built without HDF5 (cmake -DRBCSIM_HDF5=ON with "
-                     "Debian's libhdf5-openmpi-dev, as scripts/setup.sh does); use vtk");
+  const auto hdf5_or_refused = [](const std::string& why) {
+    if (!parallel::built_with_hdf5()) {
+      throw InputError("output.format", why +
+                                            ": this rbcsim was built without HDF5 (cmake "
+                                            "-DRBCSIM_HDF5=ON with Debian's libhdf5-openmpi-dev, "
+                                            "as scripts/setup.sh does); use vtk");
+    }
+    return coupling::SnapshotFormat::hdf5;
+  };
+  if (format == "hdf5") return hdf5_or_refused("hdf5");
+  if (format == "vtk") return coupling::SnapshotFormat::vtk;
+  // auto: a resumed run goes on in the format its series were started in, whatever the process
+  // count now.
+  const auto has = [&directory](const char* file) {
+    return !directory.empty() && std::filesystem::exists(directory / file);
+  };
+  if (has("cells.xdmf") || has("fluid.xdmf")) {
+    return hdf5_or_refused("auto, resuming the HDF5 series in " + directory.string());
   }
-  const bool hdf5 = format == "hdf5" || (format == "auto" && parallel::built_with_hdf5() &&
-                                         parallel::Communicator::world().size() > 1);
+  if (has("cells.pvd") || has("cell0.pvd") || has("fluid.pvd"))
+    return coupling::SnapshotFormat::vtk;
+  const bool hdf5 = parallel::built_with_hdf5() && parallel::Communicator::world().size() > 1;
   return hdf5 ? coupling::SnapshotFormat::hdf5 : coupling::SnapshotFormat::vtk;
 }
 
 coupling::SnapshotIntervals snapshot_intervals_from(const config::Config& config,
-                                                    const units::UnitConverter& units) {
+                                                    const units::UnitConverter& units,
+                                                    const std::filesystem::path& directory) {
   return {interval_steps(config.number("output.membrane_interval_s"), units),
           interval_steps(config.number("output.fluid_interval_s"), units),
-          snapshot_format_from(config)};
+          snapshot_format_from(config, directory)};
 }
 
 }  // namespace rbcsim::setup

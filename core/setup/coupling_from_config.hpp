@@ -29,12 +29,16 @@ coupling::CouplingParameters coupling_parameters_from(const config::Config& conf
 // again (CoupledSimulation), with the case's geometry.
 void require_runs_across_processes(const config::Config& config, bool curved_walls = false);
 
-// output.format resolved for this run (auto: hdf5 across processes when built with it, else vtk);
-// InputError naming output.format for hdf5 in a build without it.
-coupling::SnapshotFormat snapshot_format_from(const config::Config& config);
+// output.format resolved for a run writing its snapshots into `directory` (auto: the format of the
+// series already there when resuming, so that a run resumed on another process count goes on in
+// its own; otherwise hdf5 across processes when built with it, else vtk). InputError naming
+// output.format for hdf5 in a build without it.
+coupling::SnapshotFormat snapshot_format_from(const config::Config& config,
+                                              const std::filesystem::path& directory = {});
 // Snapshot intervals in steps: each output.*_interval_s rounded to the nearest whole number of
 // steps (at least one); 0 stays 0 (no snapshots). With the format of snapshot_format_from.
 coupling::SnapshotIntervals snapshot_intervals_from(const config::Config& config,
-                                                    const units::UnitConverter& units);
+                                                    const units::UnitConverter& units,
+                                                    const std::filesystem::path& directory = {});
 
 }  // namespace rbcsim::setup

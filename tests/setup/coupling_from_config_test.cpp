@@ -10,6 +10,9 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "config/config.hpp"
+#include "parallel/hdf5_file.hpp"
+#include "support/files.hpp"
+#include "support/scratch_directory.hpp"
 
 namespace {
 
@@ -59,6 +62,34 @@ TEST(CouplingFromConfig, SnapshotIntervalsAreRoundedToWholeSteps) {
   EXPECT_EQ(rbcsim::setup::snapshot_intervals_from(tiny, rbcsim::config::make_unit_converter(tiny))
                 .fluid_steps,
             1u);  // at least every step
+}
+
+// auto: VTK on one process (this test), and on a resume the format of the series already in the
+// run directory, so that a run checkpointed on several processes (HDF5) goes on in HDF5.
+TEST(CouplingFromConfig, AutomaticSnapshotFormatFollowsTheSeriesOfTheRunDirectory) {
+  using rbcsim::coupling::SnapshotFormat;
+  const rbcsim::testing::ScratchDirectory scratch;
+  const auto config = resolve_config();
+  EXPECT_EQ(rbcsim::setup::snapshot_format_from(config, scratch.path()), SnapshotFormat::vtk);
+  EXPECT_EQ(rbcsim::setup::snapshot_format_from(
+                resolve_config({.assignments = {"output.format=vtk"}}), scratch.path()),
+            SnapshotFormat::vtk);
+  rbcsim::testing::write_file(scratch.path() / "fluid.xdmf", "<Xdmf/>\n");
+  if (rbcsim::parallel::built_with_hdf5()) {
+    EXPECT_EQ(rbcsim::setup::snapshot_format_from(config, scratch.path()), SnapshotFormat::hdf5);
+    EXPECT_EQ(rbcsim::setup::snapshot_format_from(
+                  resolve_config({.assignments = {"output.format=hdf5"}})),
+              SnapshotFormat::hdf5);
+  } else {
+    EXPECT_THROW(rbcsim::setup::snapshot_format_from(config, scratch.path()), rbcsim::InputError);
+    EXPECT_THROW(rbcsim::setup::snapshot_format_from(
+                     resolve_config({.assignments = {"output.format=hdf5"}})),
+                 rbcsim::InputError);
+  }
+  // An explicit choice is not overridden by what the directory holds.
+  EXPECT_EQ(rbcsim::setup::snapshot_format_from(
+                resolve_config({.assignments = {"output.format=vtk"}}), scratch.path()),
+            SnapshotFormat::vtk);
 }
 
 TEST(CouplingFromConfig, UnknownIbmNamesAreRefusedByTheConfig) {

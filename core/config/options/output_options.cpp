@@ -19,7 +19,8 @@ void add_output_options(OptionTable& table) {
       "Snapshot files: vtk (.vtp, .vti, .pvd; across processes gathered and written by "
       "rank 0); hdf5 (h5/*.h5 with cells.xdmf and fluid.xdmf for ParaView, every "
       "process writing its part; needs a build with RBCSIM_HDF5); auto: vtk on one "
-      "process, hdf5 across processes when built with it.");
+      "process, hdf5 across processes when built with it, and on --resume the format of "
+      "the series already in the run directory.");
 }
 
 }  // namespace rbcsim::config
