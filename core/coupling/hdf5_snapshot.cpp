@@ -2,7 +2,6 @@
 // planes and cells into globally laid-out datasets.
 #include <array>
 #include <cstdio>
-#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -10,6 +9,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "coupling/series_entries.hpp"
 #include "coupling/snapshot.hpp"
 #include "io/xdmf_series.hpp"
 #include "parallel/distributed_fluid.hpp"
@@ -46,16 +46,11 @@ struct XdmfSeries {
     entries.push_back({simulation.time_s(), file});
     io::write_xdmf_series(directory / index, layout, arrays, entries);
   }
-  // After a resume: the interrupted run's entries up to the restored state (as Series in
-  // snapshot.cpp).
+  // After a resume: the interrupted run's entries up to the restored state.
   void continue_existing(const CoupledSimulation& simulation,
                          const std::filesystem::path& directory) {
-    const auto path = directory / index;
-    entries.clear();
-    if (!std::filesystem::exists(path)) return;
-    for (auto& entry : io::read_xdmf_series(path)) {
-      if (entry.time <= simulation.time_s()) entries.push_back(std::move(entry));
-    }
+    entries = entries_up_to(directory / index, simulation.time_s(), &io::read_xdmf_series,
+                            &io::XdmfEntry::time);
   }
 };
 
@@ -182,22 +177,23 @@ void write_cells(Hdf5OutputState& state, const CoupledSimulation& simulation) {
                   arrays);
 }
 
-// The fluid's planes [z_begin, z_end) on this process, from the solver holding them.
+// The fluid's planes [z_begin, z_end) on this process and the solver holding them, whose nodes
+// they are from first_node on, one after the other (x fastest, plane after plane, in the
+// undivided solver and in a slab alike).
 struct FluidPlanes {
   const lattice::FluidSolver* solver = nullptr;
   int z_begin = 0;
   int z_end = 0;
-  std::function<std::size_t(int, int, int)> node;
+  std::size_t first_node = 0;
 };
 
 FluidPlanes fluid_planes(const CoupledSimulation& simulation) {
   if (const auto* distributed = simulation.distributed_fluid()) {
     return {&distributed->local(), distributed->z_begin(), distributed->z_end(),
-            [distributed](int x, int y, int z) { return distributed->local_node(x, y, z); }};
+            distributed->local_node(0, 0, distributed->z_begin())};
   }
   const auto& fluid = simulation.fluid();
-  return {&fluid, 0, fluid.grid().nz(),
-          [&fluid](int x, int y, int z) { return fluid.grid().index(x, y, z); }};
+  return {&fluid, 0, fluid.grid().nz(), 0};
 }
 
 void write_fluid(Hdf5OutputState& state, const CoupledSimulation& simulation) {
@@ -210,15 +206,13 @@ void write_fluid(Hdf5OutputState& state, const CoupledSimulation& simulation) {
   std::vector<double> density;
   std::vector<std::uint8_t> mask;
   const auto& solver = *planes.solver;
-  for (int z = planes.z_begin; z < planes.z_end; ++z) {
-    for (int y = 0; y < grid.ny; ++y) {
-      for (int x = 0; x < grid.nx; ++x) {
-        const std::size_t node = planes.node(x, y, z);
-        for (int c = 0; c < 3; ++c) velocity.push_back(velocity_unit * solver.velocity()[c][node]);
-        density.push_back(density_unit * solver.density()[node]);
-        mask.push_back(solver.solid_mask()[node]);
-      }
-    }
+  const std::size_t end =
+      planes.first_node + static_cast<std::size_t>(planes.z_end - planes.z_begin) *
+                              static_cast<std::size_t>(grid.nx) * static_cast<std::size_t>(grid.ny);
+  for (std::size_t node = planes.first_node; node < end; ++node) {
+    for (int c = 0; c < 3; ++c) velocity.push_back(velocity_unit * solver.velocity()[c][node]);
+    density.push_back(density_unit * solver.density()[node]);
+    mask.push_back(solver.solid_mask()[node]);
   }
   const auto nz = static_cast<std::size_t>(grid.nz);
   const auto ny = static_cast<std::size_t>(grid.ny);

@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "coupling/series_entries.hpp"
 #include "io/atomic_file.hpp"
 #include "io/pvd_collection.hpp"
 #include "io/vtk_image_data.hpp"
@@ -41,16 +42,11 @@ struct Series {
     io::write_pvd_collection(directory / collection, entries);
   }
 
-  // After a resume: the interrupted run's entries up to the restored state. Those after it are
-  // dropped (written after the checkpoint, they are written again, to the same file names).
+  // After a resume: the interrupted run's entries up to the restored state.
   void continue_existing(const CoupledSimulation& simulation,
                          const std::filesystem::path& directory) {
-    const auto path = directory / collection;
-    entries.clear();
-    if (!std::filesystem::exists(path)) return;
-    for (auto& entry : io::read_pvd_collection(path)) {
-      if (entry.timestep <= simulation.time_s()) entries.push_back(std::move(entry));
-    }
+    entries = entries_up_to(directory / collection, simulation.time_s(), &io::read_pvd_collection,
+                            &io::PvdEntry::timestep);
   }
 };
 
