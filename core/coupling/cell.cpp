@@ -123,24 +123,63 @@ bool Cell::has_membrane_friction() const {
   return friction.central_pN_s_per_um > 0.0 || friction.tangential_pN_s_per_um > 0.0;
 }
 
+membrane::EdgeFrictionParameters Cell::friction_lu(const LatticeFrame& frame) const {
+  // gamma pN/(um/s) times (dx/dt um/s per lattice velocity) times (lattice force per pN).
+  const double per_pN_s_per_um = frame.dx_um / frame.dt_s * frame.lattice_force_per_pN;
+  const auto& friction = model_.edge_friction();
+  return {friction.central_pN_s_per_um * per_pN_s_per_um,
+          friction.tangential_pN_s_per_um * per_pN_s_per_um};
+}
+
 void Cell::solve_membrane_friction(const lattice::FluidSolver& fluid, const LatticeFrame& frame,
                                    std::size_t time_step) {
   if (!has_membrane_friction() || !fluid.populations_natural()) return;
-  // The friction in lattice force per lattice velocity: gamma pN/(um/s) times (dx/dt um/s per
-  // lattice velocity) times (lattice force per pN).
-  const double per_pN_s_per_um = frame.dx_um / frame.dt_s * frame.lattice_force_per_pN;
-  const auto& friction = model_.edge_friction();
-  const membrane::EdgeFrictionParameters friction_lu{
-      friction.central_pN_s_per_um * per_pN_s_per_um,
-      friction.tangential_pN_s_per_um * per_pN_s_per_um};
   // Every step the populations are natural (reference kernel), every second step otherwise
   // (the optimised kernel's AA pattern): each step covers the steps since the previous one.
   const auto dt_steps = static_cast<double>(time_step - last_friction_step_);
   friction_iterations_ =
       friction_.solve(stencil_, positions_lu_, membrane::EdgeNetwork::of(model_.topology()),
-                      friction_lu, dt_steps, fluid, membrane_velocities_lu_);
+                      friction_lu(frame), dt_steps, fluid, membrane_velocities_lu_);
   last_friction_step_ = time_step;
   friction_applied_ = true;
+}
+
+std::span<const std::size_t> Cell::prepare_membrane_friction() {
+  friction_.prepare(stencil_);
+  return friction_.nodes();
+}
+
+void Cell::solve_membrane_friction_with(std::span<const double> density,
+                                        std::span<const Vec3> momentum_lu,
+                                        const LatticeFrame& frame, std::size_t time_step) {
+  const auto dt_steps = static_cast<double>(time_step - last_friction_step_);
+  friction_iterations_ = friction_.solve_with_moments(
+      positions_lu_, membrane::EdgeNetwork::of(model_.topology()), friction_lu(frame), dt_steps,
+      density, momentum_lu, membrane_velocities_lu_);
+  last_friction_step_ = time_step;
+  friction_applied_ = true;
+}
+
+void Cell::append_friction_solution(std::vector<double>& values) const {
+  values.push_back(static_cast<double>(friction_iterations_));
+  for (const Vec3& u : membrane_velocities_lu_) values.insert(values.end(), {u.x(), u.y(), u.z()});
+  friction_.append_solution(values);
+}
+
+std::span<const double> Cell::adopt_friction_solution(std::span<const double> values,
+                                                      std::size_t time_step) {
+  const std::size_t count = 1 + 3 * membrane_velocities_lu_.size();
+  if (values.size() < count) {
+    throw std::invalid_argument("Cell::adopt_friction_solution: " + std::to_string(values.size()) +
+                                " values for " + std::to_string(count));
+  }
+  friction_iterations_ = static_cast<std::size_t>(values[0]);
+  for (std::size_t v = 0; v < membrane_velocities_lu_.size(); ++v) {
+    membrane_velocities_lu_[v] = Vec3(values[1 + 3 * v], values[2 + 3 * v], values[3 + 3 * v]);
+  }
+  last_friction_step_ = time_step;
+  friction_applied_ = true;
+  return friction_.adopt_solution(values.subspan(count));
 }
 
 void Cell::add_membrane_friction(lattice::FluidSolver& fluid) const {

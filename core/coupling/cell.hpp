@@ -102,6 +102,22 @@ class Cell {
   void solve_membrane_friction(const lattice::FluidSolver& fluid, const LatticeFrame& frame,
                                std::size_t time_step);
   void add_membrane_friction(lattice::FluidSolver& fluid) const;
+  // The same step in parts, for the distributed lattice, where the nodes under a cell lie on
+  // several processes (CoupledSimulation): prepare_membrane_friction() gives the nodes the solve
+  // acts on (global indices, sorted); solve_membrane_friction_with() solves from their
+  // pre-collision density and momentum as solve_membrane_friction() would from the fluid;
+  // append_friction_solution() and adopt_friction_solution() (after prepare_membrane_friction()
+  // on the copy) make a copy of the cell on another process hold that solve, bit for bit;
+  // membrane_friction_momentum() is the momentum to add per node of the solve. Throws as
+  // solve_membrane_friction and ImplicitMembraneFriction::adopt_solution.
+  std::span<const std::size_t> prepare_membrane_friction();
+  void solve_membrane_friction_with(std::span<const double> density,
+                                    std::span<const Vec3> momentum_lu, const LatticeFrame& frame,
+                                    std::size_t time_step);
+  void append_friction_solution(std::vector<double>& values) const;
+  std::span<const double> adopt_friction_solution(std::span<const double> values,
+                                                  std::size_t time_step);
+  std::span<const Vec3> membrane_friction_momentum() const { return friction_.momentum(); }
   // Phases 4-5: interpolates `velocity` with the same stencil, then moves the vertices (dt = 1).
   void interpolate_and_advance(const ibm::GridView& grid, const lattice::VectorField& velocity);
   // The same with the velocities interpolated elsewhere (on the distributed lattice,
@@ -138,6 +154,8 @@ class Cell {
 
   // Phase 5 from velocities_lu_ (or the friction step's velocities).
   void advance();
+  // The membrane's friction coefficients in lattice force per lattice velocity.
+  membrane::EdgeFrictionParameters friction_lu(const LatticeFrame& frame) const;
 };
 
 }  // namespace rbcsim::coupling

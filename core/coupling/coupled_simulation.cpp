@@ -127,11 +127,6 @@ std::size_t CoupledSimulation::add_cell(membrane::MembraneModel model,
   } catch (const RuntimeFailure& failure) {
     throw InputError(cell_label(index), std::string("initial shape: ") + failure.what());
   }
-  if (distributed_ && cell.has_membrane_friction()) {
-    throw InputError("membrane.forces",
-                     "the membrane viscosity does not run on the distributed lattice yet: run on "
-                     "one process (without mpirun)");
-  }
   cells_.push_back(std::move(cell));
   force_cap_monitors_.emplace_back();
   return index;
@@ -288,11 +283,14 @@ template <class Body>
 void CoupledSimulation::for_each_cell(const Body& body) {
   std::vector<std::size_t> all(cells_.size());
   for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
-  const auto failures = run_on_cells(all, body);
-  for (std::size_t k = 0; k < failures.size(); ++k) {
-    if (!failures[k]) continue;
+  fail_on_first(run_on_cells(all, body));
+}
+
+void CoupledSimulation::fail_on_first(std::span<const std::exception_ptr> failures_by_cell) {
+  for (std::size_t k = 0; k < failures_by_cell.size(); ++k) {
+    if (!failures_by_cell[k]) continue;
     try {
-      std::rethrow_exception(failures[k]);
+      std::rethrow_exception(failures_by_cell[k]);
     } catch (const RuntimeFailure& failure) {
       fail(k, failure.what());
     }
@@ -407,12 +405,101 @@ void CoupledSimulation::advance_fluid() {
 // friction a step later than in a solve of all cells together, as their forces meet (first order
 // in the step, like the explicit coupling itself).
 void CoupledSimulation::apply_membrane_friction() {
-  if (distributed_) return;  // no cell has membrane viscosity there (add_cell)
+  if (distributed_) {
+    apply_distributed_membrane_friction();
+    return;
+  }
   const lattice::FluidSolver& fluid = *fluid_;
   for_each_cell([this, &fluid](std::size_t k) {
     cells_[k].solve_membrane_friction(fluid, frame_, time_step_ + 1);
   });
   for (const Cell& cell : cells_) cell.add_membrane_friction(*fluid_);
+}
+
+// Across processes every process holds every cell, but the nodes under a cell lie on several of
+// them. Each process supplies the pre-collision moments of its own nodes under every cell
+// (copies, no sums), the owner of a cell solves it, and the copies of the cell elsewhere adopt
+// that solve; every process then adds every cell's momentum at its own nodes, cell after cell,
+// as apply_membrane_friction adds them on the undivided solver. So the cells, their warm starts
+// and the fluid stay those of one process, bit for bit. If a solve fails anywhere, every process
+// also solves the cells it does not own, so that all stop on the same lowest failing cell.
+void CoupledSimulation::apply_distributed_membrane_friction() {
+  if (!distributed_->populations_natural()) return;  // the same step on every process
+  std::vector<std::size_t> with_friction;
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    if (cells_[k].has_membrane_friction()) with_friction.push_back(k);
+  }
+  if (with_friction.empty()) return;
+  constexpr std::size_t kValuesPerNode = 6;  // append_own_pre_collision_moments
+  std::vector<std::span<const std::size_t>> nodes(cells_.size());
+  std::vector<double> own_moments;
+  for (const std::size_t k : with_friction) {
+    nodes[k] = cells_[k].prepare_membrane_friction();
+    distributed_->append_own_pre_collision_moments(nodes[k], static_cast<double>(k), own_moments);
+  }
+  const parallel::Communicator& processes = parameters_.processes;
+  const std::vector<double> moments = processes.gather_to_all(own_moments);
+  std::vector<std::vector<double>> density(cells_.size());
+  std::vector<std::vector<Vec3>> momentum(cells_.size());
+  std::size_t expected = 0;
+  for (const std::size_t k : with_friction) {
+    density[k].assign(nodes[k].size(), 0.0);
+    momentum[k].assign(nodes[k].size(), Vec3::Zero());
+    expected += nodes[k].size();
+  }
+  if (moments.size() != kValuesPerNode * expected) {  // the same on every process
+    throw std::logic_error("CoupledSimulation: the moments of " +
+                           std::to_string(moments.size() / kValuesPerNode) + " of " +
+                           std::to_string(expected) + " nodes under the membranes came back");
+  }
+  for (std::size_t i = 0; i < moments.size(); i += kValuesPerNode) {
+    const auto k = static_cast<std::size_t>(moments[i]);
+    const auto n = static_cast<std::size_t>(moments[i + 1]);
+    density[k].at(n) = moments[i + 2];
+    momentum[k].at(n) = Vec3(moments[i + 3], moments[i + 4], moments[i + 5]);
+  }
+  const std::size_t step = time_step_ + 1;
+  const auto solve = [&](std::size_t k) {
+    cells_[k].solve_membrane_friction_with(density[k], momentum[k], frame_, step);
+  };
+  std::vector<std::size_t> owned;
+  std::vector<std::size_t> copies;
+  for (const std::size_t k : with_friction) (owns_cell(k) ? owned : copies).push_back(k);
+  std::vector<std::exception_ptr> failures(cells_.size());
+  const auto record = [&failures](std::span<const std::size_t> indices,
+                                  const std::vector<std::exception_ptr>& found) {
+    bool any = false;
+    for (std::size_t i = 0; i < indices.size(); ++i) {
+      failures[indices[i]] = found[i];
+      any = any || found[i] != nullptr;
+    }
+    return any;
+  };
+  const bool failed_here = record(owned, run_on_cells(owned, solve));
+  if (processes.any(failed_here)) {
+    record(copies, run_on_cells(copies, solve));
+    fail_on_first(failures);
+  }
+  std::vector<double> own_solutions;
+  for (const std::size_t k : owned) {
+    own_solutions.push_back(static_cast<double>(k));
+    cells_[k].append_friction_solution(own_solutions);
+  }
+  const std::vector<double> solutions = processes.gather_to_all(own_solutions);
+  std::span<const double> rest(solutions);
+  std::size_t adopted = 0;
+  while (!rest.empty()) {  // an owner adopts its own solve too: the same values
+    const auto k = static_cast<std::size_t>(rest.front());
+    rest = cells_.at(k).adopt_friction_solution(rest.subspan(1), step);
+    ++adopted;
+  }
+  if (adopted != with_friction.size()) {
+    throw std::logic_error("CoupledSimulation: the friction of " + std::to_string(adopted) +
+                           " of " + std::to_string(with_friction.size()) + " cells came back");
+  }
+  for (const std::size_t k : with_friction) {
+    distributed_->add_momentum_on_own_nodes(nodes[k], cells_[k].membrane_friction_momentum());
+  }
 }
 
 void CoupledSimulation::advance_cells() {
@@ -453,7 +540,11 @@ void CoupledSimulation::step() {
   if (!forces_spread_) spread_forces();
   auto start = Clock::now();
   if (cytoplasm_) {
-    cytoplasm_->update(cells_, grid_, fluid_->viscosity_classes());
+    // Across processes every process locates every cell's cytoplasm on its copy of the whole
+    // lattice's classes, and its slab takes its planes of them.
+    if (cytoplasm_->update(cells_, grid_, fluid_->viscosity_classes()) && distributed_) {
+      distributed_->set_viscosity_classes(fluid_->viscosity_classes());
+    }
     lap(start, phase_times_.indicator_s);
   }
   advance_fluid();

@@ -20,7 +20,11 @@
 // up; every process holds every cell; with several cells, each cell's membrane and hook forces
 // are computed by the process holding its centroid's plane and copied to all (contact is computed
 // everywhere); each process spreads the forces onto its own planes and interpolates the vertices
-// in its planes, and the velocities are copied to all (parallel/distributed_ibm.hpp). The state is
+// in its planes, and the velocities are copied to all (parallel/distributed_ibm.hpp); with membrane
+// viscosity, the owner of a cell solves its friction step from the moments every process supplies
+// for its own nodes, and every process adds the momentum at its own nodes; with a viscosity
+// contrast, every process locates every cytoplasm and its slab takes its planes of the classes.
+// The state is
 // bit-identical to one process's, on any number of processes. Observers and stop criteria run on
 // every process alike; only rank 0 writes files.
 //
@@ -72,8 +76,8 @@ struct CouplingParameters {
   // Where failure dumps go (and what observers may write to); empty: no dump.
   std::filesystem::path run_directory;
   // The processes the fluid is cut across: one (the default) steps the undivided solver, several
-  // its slabs. Not distributed yet (InputError): a viscosity contrast, membrane viscosity, curved
-  // wall links under an interpolated wall rule.
+  // its slabs. Not distributed yet (InputError): curved wall links under an interpolated wall
+  // rule.
   parallel::Communicator processes = parallel::Communicator::self();
   // lattice.block_planes: the z-planes of one block of the decomposition (at least 2).
   int block_planes = 4;
@@ -259,6 +263,10 @@ class CoupledSimulation {
   void build_contact_surfaces();
   void advance_fluid();
   void apply_membrane_friction();
+  void apply_distributed_membrane_friction();
+  // fail() for the lowest-indexed cell whose entry holds a RuntimeFailure; other exceptions go on
+  // up (a bug, which stops the run). Returns if there is none.
+  void fail_on_first(std::span<const std::exception_ptr> failures_by_cell);
   void advance_cells();
   void check_cells();
   void notify_due_observers();

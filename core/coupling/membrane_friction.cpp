@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 
 #include "common/errors.hpp"
@@ -20,7 +21,7 @@ double dot(std::span<const Vec3> a, std::span<const Vec3> b) {
 
 }  // namespace
 
-void ImplicitMembraneFriction::gather_nodes(const ibm::InterpolationStencil& stencil) {
+void ImplicitMembraneFriction::prepare(const ibm::InterpolationStencil& stencil) {
   nodes_.clear();
   for (std::size_t v = 0; v < stencil.point_count(); ++v) {
     const auto nodes = stencil.nodes(v);
@@ -111,16 +112,58 @@ std::size_t ImplicitMembraneFriction::solve(const ibm::InterpolationStencil& ste
                                             double dt_steps, const lattice::FluidSolver& fluid,
                                             std::span<Vec3> membrane_velocities_lu,
                                             const ImplicitFrictionSettings& settings) {
-  gather_nodes(stencil);
-  const std::size_t node_count = nodes_.size();
-  const std::size_t vertex_count = stencil.point_count();
-  const auto axes = membrane::edge_axes(positions_lu, network);
+  prepare(stencil);
   // The fluid as the next collision will find it (after streaming, before the next force): the
   // friction must act on that state, not on the latest collision's velocity, which streaming
   // has since moved by a link (acting on the stale one pumps energy into the flow).
-  std::vector<double> density(node_count);
-  std::vector<Vec3> fluid_velocity(node_count);
-  fluid.pre_collision_moments(nodes_, density, fluid_velocity);
+  std::vector<double> density(nodes_.size());
+  std::vector<Vec3> momentum_lu(nodes_.size());
+  fluid.pre_collision_moments(nodes_, density, momentum_lu);
+  return solve_with_moments(positions_lu, network, friction_lu, dt_steps, density, momentum_lu,
+                            membrane_velocities_lu, settings);
+}
+
+void ImplicitMembraneFriction::append_solution(std::vector<double>& values) const {
+  for (const Vec3& m : momentum_) values.insert(values.end(), {m.x(), m.y(), m.z()});
+  for (const Vec3& c : previous_correction_) values.insert(values.end(), {c.x(), c.y(), c.z()});
+}
+
+std::span<const double> ImplicitMembraneFriction::adopt_solution(std::span<const double> values) {
+  const std::size_t count = 6 * nodes_.size();
+  if (values.size() < count) {
+    throw std::invalid_argument(
+        "ImplicitMembraneFriction::adopt_solution: " + std::to_string(values.size()) +
+        " values for " + std::to_string(count));
+  }
+  const std::size_t node_count = nodes_.size();
+  momentum_.resize(node_count);
+  previous_correction_.resize(node_count);
+  for (std::size_t k = 0; k < node_count; ++k) {
+    momentum_[k] = Vec3(values[3 * k], values[3 * k + 1], values[3 * k + 2]);
+    const std::size_t c = 3 * (node_count + k);
+    previous_correction_[k] = Vec3(values[c], values[c + 1], values[c + 2]);
+  }
+  previous_nodes_ = nodes_;
+  return values.subspan(count);
+}
+
+std::size_t ImplicitMembraneFriction::solve_with_moments(
+    std::span<const Vec3> positions_lu, const membrane::EdgeNetwork& network,
+    const membrane::EdgeFrictionParameters& friction_lu, double dt_steps,
+    std::span<const double> density, std::span<const Vec3> momentum_lu,
+    std::span<Vec3> membrane_velocities_lu, const ImplicitFrictionSettings& settings) {
+  const std::size_t node_count = nodes_.size();
+  const std::size_t vertex_count = slot_offsets_.size() - 1;
+  if (density.size() != node_count || momentum_lu.size() != node_count ||
+      positions_lu.size() != vertex_count) {
+    throw std::invalid_argument("ImplicitMembraneFriction::solve_with_moments: moments of " +
+                                std::to_string(density.size()) + " nodes for " +
+                                std::to_string(node_count) + ", " +
+                                std::to_string(positions_lu.size()) + " positions for " +
+                                std::to_string(vertex_count) + " vertices");
+  }
+  const auto axes = membrane::edge_axes(positions_lu, network);
+  std::vector<Vec3> fluid_velocity(momentum_lu.begin(), momentum_lu.end());
   for (std::size_t k = 0; k < node_count; ++k) fluid_velocity[k] /= density[k];
   // S x (nodes -> vertices), in slot order.
   auto interpolate = [&](std::span<const Vec3> x, std::span<Vec3> out) {

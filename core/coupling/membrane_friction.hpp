@@ -59,12 +59,33 @@ class ImplicitMembraneFriction {
   // Adds the latest solve's momentum to `fluid` (FluidSolver::add_momentum).
   void add_momentum_to(lattice::FluidSolver& fluid) const;
 
+  // The same solve in two halves, for a fluid held elsewhere (the distributed lattice, where the
+  // nodes under a cell lie on several processes): prepare() finds the stencil's nodes, sorted
+  // (nodes()); solve_with_moments() then solves from their pre-collision density and momentum
+  // (FluidSolver::pre_collision_moments of nodes()), exactly as solve() does.
+  void prepare(const ibm::InterpolationStencil& stencil);
+  std::span<const std::size_t> nodes() const { return nodes_; }
+  std::size_t solve_with_moments(std::span<const Vec3> positions_lu,
+                                 const membrane::EdgeNetwork& network,
+                                 const membrane::EdgeFrictionParameters& friction_lu,
+                                 double dt_steps, std::span<const double> density,
+                                 std::span<const Vec3> momentum_lu,
+                                 std::span<Vec3> membrane_velocities_lu,
+                                 const ImplicitFrictionSettings& settings = {});
+  // The latest solve's momentum per node of nodes() (lattice units, rho u), to add to the fluid.
+  std::span<const Vec3> momentum() const { return momentum_; }
+  // The latest solve as values, for the copies of this cell on other processes: append_solution
+  // adds the momentum and the correction per node of nodes() to `values`; adopt_solution, after
+  // prepare() on the same stencil, takes them as if this copy had solved, and returns what
+  // follows. Throws std::invalid_argument for values too short.
+  void append_solution(std::vector<double>& values) const;
+  std::span<const double> adopt_solution(std::span<const double> values);
+
   // The previous solve's nodes and correction (the next solve's start), under `prefix`.
   void save_state(StateArchive& archive, const std::string& prefix) const;
   void restore_state(StateArchive& archive, const std::string& prefix);
 
  private:
-  void gather_nodes(const ibm::InterpolationStencil& stencil);
   // Adds the previous solve's correction to `velocity` (one per node of nodes_) at the nodes both
   // share; false when they share none (the first solve).
   bool add_previous_correction(std::span<Vec3> velocity) const;

@@ -66,14 +66,6 @@ HaloScheme chosen_scheme(HaloScheme scheme, const lattice::FluidParameters& para
   return scheme;
 }
 
-lattice::FluidParameters distributable(lattice::FluidParameters parameters) {
-  if (parameters.inner_viscosity_ratio != 1.0) {
-    throw InputError("physics.cytoplasm_viscosity_ratio",
-                     "a viscosity contrast does not run on the distributed lattice yet");
-  }
-  return parameters;
-}
-
 // The nodes of an undivided solver that are not fluid (walls, velocity inlets, pressure outlets),
 // none without any. Every rule but the interpolated walls' is the boundary node's own business;
 // those read the node behind, which may sit in a ghost plane the crossing populations leave
@@ -121,6 +113,7 @@ DistributedFluid::DistributedFluid(Communicator communicator, const lattice::Flu
   StateArchive state("the undivided fluid");
   whole.save_state(state);
   restore_state(state);
+  if (whole.has_viscosity_contrast()) set_viscosity_classes(whole.viscosity_classes());
 }
 
 DistributedFluid::DistributedFluid(Communicator communicator, lattice::LatticeGrid global,
@@ -133,7 +126,7 @@ DistributedFluid::DistributedFluid(Communicator communicator, lattice::LatticeGr
           lattice::LatticeGrid(global.nx(), global.ny(),
                                decomposition_.z_end(communicator_.rank()) -
                                    decomposition_.z_begin(communicator_.rank()) + 2 * kHaloPlanes),
-          distributable(parameters)),
+          parameters),
       scheme_(chosen_scheme(scheme, parameters)),
       walls_(is_wall) {
   const lattice::LatticeGrid& grid = local_.grid();
@@ -197,6 +190,72 @@ void DistributedFluid::initialise_equilibrium(
     }
   }
   local_.initialise_equilibrium(density, velocity);
+}
+
+std::int64_t DistributedFluid::own_local_index(std::size_t global_node) const {
+  const std::size_t plane_size = static_cast<std::size_t>(global_.nx()) * global_.ny();
+  const auto z = static_cast<int>(global_node / plane_size);
+  if (z < z_begin() || z >= z_end()) return -1;
+  return static_cast<std::int64_t>(global_node % plane_size +
+                                   static_cast<std::size_t>(z - z_begin() + kHaloPlanes) *
+                                       plane_size);
+}
+
+void DistributedFluid::append_own_pre_collision_moments(std::span<const std::size_t> global_nodes,
+                                                        double label,
+                                                        std::vector<double>& values) const {
+  std::vector<std::size_t> positions;
+  std::vector<std::size_t> local_nodes;
+  for (std::size_t k = 0; k < global_nodes.size(); ++k) {
+    const std::int64_t local = own_local_index(global_nodes[k]);
+    if (local < 0) continue;
+    positions.push_back(k);
+    local_nodes.push_back(static_cast<std::size_t>(local));
+  }
+  std::vector<double> density(local_nodes.size());
+  std::vector<Vec3> momentum(local_nodes.size());
+  local_.pre_collision_moments(local_nodes, density, momentum);
+  for (std::size_t k = 0; k < local_nodes.size(); ++k) {
+    values.insert(values.end(), {label, static_cast<double>(positions[k]), density[k],
+                                 momentum[k].x(), momentum[k].y(), momentum[k].z()});
+  }
+}
+
+void DistributedFluid::add_momentum_on_own_nodes(std::span<const std::size_t> global_nodes,
+                                                 std::span<const Vec3> momentum) {
+  if (momentum.size() != global_nodes.size()) {
+    throw std::invalid_argument("parallel: momentum for " + std::to_string(momentum.size()) +
+                                " of " + std::to_string(global_nodes.size()) + " nodes");
+  }
+  std::vector<std::size_t> local_nodes;
+  std::vector<Vec3> own_momentum;
+  for (std::size_t k = 0; k < global_nodes.size(); ++k) {
+    const std::int64_t local = own_local_index(global_nodes[k]);
+    if (local < 0) continue;
+    local_nodes.push_back(static_cast<std::size_t>(local));
+    own_momentum.push_back(momentum[k]);
+  }
+  local_.add_momentum(local_nodes, own_momentum);
+}
+
+void DistributedFluid::set_viscosity_classes(
+    std::span<const lattice::ViscosityClass> global_classes) {
+  if (global_classes.size() != global_.node_count()) {
+    throw std::invalid_argument("parallel: " + std::to_string(global_classes.size()) +
+                                " viscosity classes for " + std::to_string(global_.node_count()) +
+                                " nodes");
+  }
+  const std::span<lattice::ViscosityClass> classes = local_.viscosity_classes();
+  const std::size_t plane_size = static_cast<std::size_t>(global_.nx()) * global_.ny();
+  const int planes = local_.grid().nz();
+  for (int z = 0; z < planes; ++z) {
+    const int global_z = lattice::LatticeGrid::wrap(z_begin() - kHaloPlanes + z, global_.nz());
+    const auto from = global_classes.begin() +
+                      static_cast<std::ptrdiff_t>(static_cast<std::size_t>(global_z) * plane_size);
+    std::copy(
+        from, from + static_cast<std::ptrdiff_t>(plane_size),
+        classes.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(z) * plane_size));
+  }
 }
 
 lattice::VectorField& DistributedFluid::force_density() {

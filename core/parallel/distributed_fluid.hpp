@@ -27,13 +27,15 @@
 // highest slab. Checkpoints take the undivided solver's form (save_state), so they do not depend on
 // the process count; they pass through rank 0 whole (MPI counts are ints: at most 2^31 - 1
 // values, some 113 million nodes, refused beyond). Moving walls, velocity inlets and pressure
-// outlets come with an undivided solver cut into slabs (its constructor). Not distributed yet: a
-// viscosity contrast, interpolated wall links (refused with InputError). Densities
+// outlets come with an undivided solver cut into slabs (its constructor), and a viscosity contrast
+// with its classes (set_viscosity_classes). Not distributed yet: interpolated wall links (refused
+// with InputError). Densities
 // and velocities are the slab's own; the ghost planes' are not kept (distributed_ibm.hpp exchanges
 // the velocities it needs).
 #pragma once
 
 #include "common/state_archive.hpp"
+#include "common/vec3.hpp"
 #include "lattice/fluid_solver.hpp"
 #include "lattice/lattice_grid.hpp"
 #include "parallel/block_decomposition.hpp"
@@ -75,8 +77,8 @@ class DistributedFluid {
  public:
   // Every process of `communicator` constructs it with the same arguments (collective). Blocks of
   // `block_planes` planes, weighted by their fluid nodes. Throws rbcsim::InputError for a
-  // decomposition that does not fit (block_decomposition.hpp) or a setting not distributed yet
-  // (a viscosity contrast), std::logic_error for crossing populations where they do not fit.
+  // decomposition that does not fit (block_decomposition.hpp), std::logic_error for crossing
+  // populations where they do not fit.
   DistributedFluid(Communicator communicator, lattice::LatticeGrid global, int block_planes,
                    lattice::FluidParameters parameters, const WallPredicate& is_wall = {},
                    HaloScheme scheme = HaloScheme::automatic);
@@ -105,6 +107,9 @@ class DistributedFluid {
   // The local index of global node (x, y, z), for z in [z_begin() - kHaloPlanes, z_end() +
   // kHaloPlanes) (not wrapped).
   std::size_t local_node(int x, int y, int z) const;
+  // The local index of global node `global_node` (grid order of the whole lattice) if it lies in
+  // this slab's own planes, else -1.
+  std::int64_t own_local_index(std::size_t global_node) const;
 
   // Equilibrium at rest or moving, every node of the slab and its ghosts.
   void initialise_equilibrium(double density, const std::array<double, 3>& velocity);
@@ -117,6 +122,26 @@ class DistributedFluid {
   // The local force density (grid order of the local solver): add forces at the slab's own nodes;
   // the next step copies the ghost planes' from the neighbours.
   lattice::VectorField& force_density();
+
+  // The membrane viscosity's implicit step (coupling/membrane_friction.hpp) across the slabs.
+  // Whether the populations are in natural layout now (the same on every process).
+  bool populations_natural() const { return local_.populations_natural(); }
+  // For each node of `global_nodes` (global indices) in this slab's own planes, its pre-collision
+  // density and momentum (FluidSolver::pre_collision_moments) appended to `values` as six numbers:
+  // `label`, the node's position in `global_nodes`, the density, the momentum's x, y, z.
+  void append_own_pre_collision_moments(std::span<const std::size_t> global_nodes, double label,
+                                        std::vector<double>& values) const;
+  // FluidSolver::add_momentum of momentum[k] at global node global_nodes[k], for the nodes in
+  // this slab's own planes (the other nodes are their owners' to add; the next step's halo
+  // exchange carries the change to the ghost planes).
+  void add_momentum_on_own_nodes(std::span<const std::size_t> global_nodes,
+                                 std::span<const Vec3> momentum);
+  // With a viscosity contrast (lattice::FluidParameters::inner_viscosity_ratio): the classes of
+  // the whole lattice, one per global node in grid order (what coupling/cytoplasm_indicator.hpp
+  // writes on the undivided solver), copied into the slab and its ghost planes, so that every
+  // node collides with the rates of its class as on the undivided solver. Throws
+  // std::logic_error without a contrast, std::invalid_argument for a wrong count.
+  void set_viscosity_classes(std::span<const lattice::ViscosityClass> global_classes);
 
   // Collective: the halo exchange, then one step of the local solver.
   void step();

@@ -20,15 +20,6 @@ std::size_t plane_size_of(const lattice::LatticeGrid& grid) {
   return static_cast<std::size_t>(grid.nx()) * grid.ny();
 }
 
-// The local node of global node `node` if this process holds its plane, else -1.
-std::int64_t own_local_node(const DistributedFluid& fluid, std::size_t node) {
-  const std::size_t plane_size = plane_size_of(fluid.global_grid());
-  const auto z = static_cast<int>(node / plane_size);
-  if (z < fluid.z_begin() || z >= fluid.z_end()) return -1;
-  return static_cast<std::int64_t>(
-      node % plane_size + static_cast<std::size_t>(z - fluid.z_begin() + kHaloPlanes) * plane_size);
-}
-
 // Whether this process interpolates the point at `position_lu`: it holds the point's plane.
 bool interpolates_here(const DistributedFluid& fluid, const Vec3& position_lu) {
   const int plane = lattice::LatticeGrid::wrap(static_cast<int>(std::floor(position_lu.z())),
@@ -147,7 +138,7 @@ void spread_onto_slab(std::span<const ibm::SpreadSource> sources, DistributedFlu
       const auto weights = stencil.weights(point);
       const Vec3& f = source.point_forces_lu[point];
       for (std::size_t slot = 0; slot < nodes.size(); ++slot) {
-        const std::int64_t local = own_local_node(fluid, nodes[slot]);
+        const std::int64_t local = fluid.own_local_index(nodes[slot]);
         if (local < 0) continue;
         fx[local] += weights[slot] * f.x();
         fy[local] += weights[slot] * f.y();

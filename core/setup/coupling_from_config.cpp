@@ -61,18 +61,6 @@ void require_runs_across_processes(const config::Config& config, bool curved_wal
                          " (curved wall links) does not run across processes yet: use halfway or "
                          "run on one process (without mpirun)");
   }
-  if (config.number("physics.cytoplasm_viscosity_ratio") != 1.0) {
-    throw InputError("physics.cytoplasm_viscosity_ratio",
-                     "a viscosity contrast does not run across processes yet: set it to 1 or run "
-                     "on one process (without mpirun)");
-  }
-  const auto forces = config.string_list("membrane.forces");
-  if (std::ranges::find(forces, "viscosity") != forces.end() &&
-      config.number("membrane.viscosity_Pa_s_um") > 0.0) {
-    throw InputError("membrane.forces",
-                     "the membrane viscosity does not run across processes yet: leave it out "
-                     "(the paper preset) or run on one process (without mpirun)");
-  }
 }
 
 coupling::SnapshotFormat snapshot_format_from(const config::Config& config,

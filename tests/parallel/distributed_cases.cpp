@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -11,6 +12,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "ibm/delta_kernels.hpp"
 #include "ibm/grid_view.hpp"
@@ -44,6 +46,25 @@ DistributedFluid::NodeState initial_state(int x, int y, int z) {
            0.015 * std::sin(phase + x)}};
 }
 
+// The viscosity classes of the contrast cases: an ellipsoidal blob across z 2-9 (the faces of
+// blocks of 2 planes and of every slab), its class falling from 255 at the centre to 0 at the
+// edge, so that neighbouring nodes relax at different rates.
+lattice::ViscosityClass blob_class(int x, int y, int z) {
+  const double r2 =
+      std::pow((x - 2.5) / 2.5, 2) + std::pow((y - 3.0) / 2.5, 2) + std::pow((z - 5.5) / 4.0, 2);
+  return lattice::viscosity_class(std::max(0.0, 1.0 - r2));
+}
+
+std::vector<lattice::ViscosityClass> blob_classes(const lattice::LatticeGrid& grid) {
+  std::vector<lattice::ViscosityClass> classes(grid.node_count());
+  for (int z = 0; z < grid.nz(); ++z) {
+    for (int y = 0; y < grid.ny(); ++y) {
+      for (int x = 0; x < grid.nx(); ++x) classes[grid.index(x, y, z)] = blob_class(x, y, z);
+    }
+  }
+  return classes;
+}
+
 // A force density that differs at every node and step, the same wherever it is computed.
 std::array<double, 3> test_force(int x, int y, int z, std::size_t step) {
   const double phase = 0.3 * x + 0.7 * y + 1.1 * z + 0.05 * static_cast<double>(step);
@@ -70,6 +91,11 @@ std::vector<DistributedCase> distributed_cases() {
   lattice::FluidParameters sheared;
   sheared.lees_edwards_velocity = 0.02;
   cases.push_back({"aa_lees_edwards", sheared, false, false});
+  lattice::FluidParameters contrast = channel;
+  contrast.inner_viscosity_ratio = 5.0;
+  DistributedCase cytoplasm{"aa_viscosity_contrast", contrast, true, true};
+  cytoplasm.viscosity_classes = true;
+  cases.push_back(cytoplasm);
   // The reference twin of the AA kernel's crossing-populations halo.
   const std::size_t aa_cases = cases.size();
   for (std::size_t k = 0; k < aa_cases; ++k) {
@@ -116,6 +142,10 @@ std::unique_ptr<lattice::FluidSolver> make_undivided(const DistributedCase& flow
     }
   }
   solver->initialise_equilibrium(density, velocity);
+  if (flow.viscosity_classes) {
+    const auto classes = blob_classes(grid);
+    std::copy(classes.begin(), classes.end(), solver->viscosity_classes().begin());
+  }
   return solver;
 }
 
@@ -146,6 +176,9 @@ std::unique_ptr<DistributedFluid> make_distributed(const DistributedCase& flow,
                                                   lattice::LatticeGrid(kCaseNx, kCaseNy, kCaseNz),
                                                   2, flow.parameters, walls, flow.scheme);
   fluid->initialise_equilibrium(initial_state);
+  if (flow.viscosity_classes) {
+    fluid->set_viscosity_classes(blob_classes(lattice::LatticeGrid(kCaseNx, kCaseNy, kCaseNz)));
+  }
   return fluid;
 }
 

@@ -23,13 +23,17 @@ struct DistributedCase {
   bool force_field = false;  // a force density that varies in space and time, added every step
   HaloScheme scheme = HaloScheme::automatic;
   bool obstacle = false;  // with walls: also a block across the channel, straddling slab faces
+  // A viscosity contrast (parameters.inner_viscosity_ratio) with classes that vary from node to
+  // node in a blob straddling slab faces (DistributedFluid::set_viscosity_classes).
+  bool viscosity_classes = false;
 };
 
 // GoogleTest prints a case by its name.
 inline void PrintTo(const DistributedCase& flow, std::ostream* out) { *out << flow.name; }
 
 // Every case of the equality tests: the AA kernel in double and single precision, the reference
-// kernel, a force field, Lees-Edwards; the AA kernel's cases with both halo schemes.
+// kernel, a force field, Lees-Edwards, a viscosity contrast; the AA kernel's cases with both halo
+// schemes.
 std::vector<DistributedCase> distributed_cases();
 
 inline constexpr int kCaseNx = 6;

@@ -182,11 +182,16 @@ TEST(DistributedFluid, CutFromAnUndividedSolverRefusesInterpolatedWallLinks) {
   }
 }
 
-TEST(DistributedFluid, RefusesAViscosityContrastItDoesNotDistribute) {
+// The classes are the whole lattice's, one per global node; a contrast is needed to hold them.
+TEST(DistributedFluid, ViscosityClassesMustCoverTheWholeLattice) {
   lattice::FluidParameters parameters;
   parameters.inner_viscosity_ratio = 5.0;
-  EXPECT_THROW(DistributedFluid(Communicator::self(), lattice::LatticeGrid(3, 3, 4), 2, parameters),
-               InputError);
+  DistributedFluid fluid(Communicator::self(), lattice::LatticeGrid(3, 3, 4), 2, parameters);
+  EXPECT_THROW(fluid.set_viscosity_classes(std::vector<lattice::ViscosityClass>(35, 0)),
+               std::invalid_argument);
+  DistributedFluid without(Communicator::self(), lattice::LatticeGrid(3, 3, 4), 2, {});
+  EXPECT_THROW(without.set_viscosity_classes(std::vector<lattice::ViscosityClass>(36, 0)),
+               std::logic_error);
 }
 
 }  // namespace

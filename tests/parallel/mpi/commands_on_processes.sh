@@ -5,8 +5,10 @@
 # exits 0. Snapshots in both formats: the capillary and the tube suspension write HDF5 + XDMF
 # (output.format=hdf5, each process its part; the same bytes on 1 to 4 processes), which
 # check_hdf5_output.py reads with h5py against the VTK of the same run; the sheared suspension
-# writes VTK gathered onto rank 0. A capillary checkpointed on 4 processes resumes on 2 and on 1
-# to the same files. Settings not distributed yet stop with exit 2, one line, before any output.
+# writes VTK gathered onto rank 0. The physiological preset (membrane viscosity, a viscous
+# cytoplasm) in a shear and a tube suspension. A capillary checkpointed on 4 processes resumes on
+# 2 and on 1 to the same files. Settings not distributed yet stop with exit 2, one line, before
+# any output.
 # Usage: commands_on_processes.sh MPIEXEC RBCSIM [FORMAT]
 # FORMAT: hdf5 (default) or vtk, for a build without HDF5: the capillary and the tube suspension
 # then write VTK too, and the HDF5 checks are left out.
@@ -130,6 +132,16 @@ if [ "$format" = hdf5 ]; then
   "$python" "$check_hdf5" tube_suspension.2 tube_suspension.vtk || failed=1
 fi
 
+# The physiological preset: membrane viscosity (each cell's implicit friction step over fluid nodes
+# on several processes) and a viscous cytoplasm (per-node viscosity classes), one cell sheared and
+# a two-cell suspension in the tube.
+# shellcheck disable=SC2086
+same_as_one physiological_shear "2" shear $coarse_cell --set shear.max_reynolds_number=0.4 \
+  --set shear.width_diameters=1.6 --set shear.gap_diameters=2 --max-strain 1 --rates 500 \
+  --set lattice.block_planes=2 --preset physiological
+# shellcheck disable=SC2086
+same_as_one physiological_tube "2" $tube --set output.format=vtk --preset physiological
+
 # What does not run across processes yet: exit 2, one line naming the setting, no run directory.
 refused() {
   "$mpiexec" -n 2 --oversubscribe "$rbcsim" "$@" --output refused >/dev/null 2>refused.err
@@ -141,12 +153,11 @@ refused() {
   fi
   rm -rf refused
 }
-# shellcheck disable=SC2086
-refused shear $coarse_cell --preset physiological
 refused stretch --set mesh.subdivisions=2 --mode quasi-static
 refused capillary --set mesh.subdivisions=2 --set lattice.wall_rule=bouzidi
 refused calibrate
 
-[ $failed -eq 0 ] && echo "shear, stretch --mode fluid, capillary and both suspensions: the same" \
-  "files as one process, HDF5 snapshots as VTK's; settings not distributed yet refused"
+[ $failed -eq 0 ] && echo "shear, stretch --mode fluid, capillary and both suspensions (also with" \
+  "the physiological preset): the same files as one process, HDF5 snapshots as VTK's; settings" \
+  "not distributed yet refused"
 exit $failed

@@ -36,23 +36,36 @@ namespace {
 constexpr std::size_t kCells = 20;
 constexpr double kPushPerVertexPN = 0.2;
 
+// What the cells are made of: capsules in plasma, or with the physiological preset's membrane
+// viscosity (an implicit friction step on the fluid nodes under each membrane, which lie on
+// several processes) in a cytoplasm five times as viscous as the plasma (per-node viscosity
+// classes, located every step).
+enum class Membrane { elastic, viscous_in_viscous_cytoplasm };
+
 // 16 x 14 x 24 nodes (8 x 7 x 12 um), periodic, the y faces sliding at +-0.01 (lattice units).
-std::unique_ptr<lattice::FluidSolver> sheared_box() {
+std::unique_ptr<lattice::FluidSolver> sheared_box(Membrane membrane) {
   lattice::FluidParameters parameters;
   parameters.lees_edwards_velocity = 0.02;
+  if (membrane == Membrane::viscous_in_viscous_cytoplasm) parameters.inner_viscosity_ratio = 5.0;
   return std::make_unique<lattice::FluidSolver>(lattice::LatticeGrid(16, 14, 24), parameters);
 }
 
 // 20 spheres of radius 1 um (42 vertices) on a 3 x 2 x 4 lattice of centres, away from the sliding
 // plane (the IBM does not reach across it); the first rows of z straddle the periodic seam.
 std::unique_ptr<coupling::CoupledSimulation> suspension(
-    const Communicator& processes, contact::ContactLaw law = contact::ContactLaw::vertex) {
+    const Communicator& processes, contact::ContactLaw law = contact::ContactLaw::vertex,
+    Membrane membrane = Membrane::elastic) {
   coupling::CouplingParameters coupling;
   coupling.processes = processes;
   coupling.block_planes = 2;
+  coupling.cytoplasm_update_lu = 0.0;
   auto simulation = std::make_unique<coupling::CoupledSimulation>(
-      sheared_box(), coupling::testing::plasma_units(), std::move(coupling));
-  const auto capsule = coupling::testing::capsule_parameters(300.0);
+      sheared_box(membrane), coupling::testing::plasma_units(), std::move(coupling));
+  auto capsule = coupling::testing::capsule_parameters(300.0);
+  if (membrane == Membrane::viscous_in_viscous_cytoplasm) {
+    capsule.forces.push_back("viscosity");
+    capsule.viscosity_Pa_s_um = 0.5;
+  }
   std::size_t added = 0;
   for (const double z_um : {0.2, 3.2, 6.2, 9.2}) {
     for (const double y_um : {2.3, 4.7}) {
@@ -101,10 +114,10 @@ std::size_t differing(const std::vector<double>& a, const std::vector<double>& b
 }
 
 // The run on every process against the undivided one on rank 0, after kSteps steps.
-void expect_undivided_run(contact::ContactLaw law) {
+void expect_undivided_run(contact::ContactLaw law, Membrane membrane = Membrane::elastic) {
   constexpr std::size_t kSteps = 40;
   const Communicator world = Communicator::world();
-  auto distributed = suspension(world, law);
+  auto distributed = suspension(world, law, membrane);
   EXPECT_EQ(distributed->distributed(), world.size() > 1);
   const Vec3 start_lu = distributed->cell(0).centroid_lu();
   std::size_t steps_in_contact = 0;
@@ -114,9 +127,16 @@ void expect_undivided_run(contact::ContactLaw law) {
   }
   const auto state = state_of(*distributed);
   if (!world.is_root()) return;
-  auto undivided = suspension(Communicator::self(), law);
+  auto undivided = suspension(Communicator::self(), law, membrane);
   advance(*undivided, kSteps);
   const auto expected = state_of(*undivided);
+  if (membrane == Membrane::viscous_in_viscous_cytoplasm) {
+    // The friction steps ran (every second step, the AA kernel's natural layout) and iterated.
+    EXPECT_GT(undivided->cell(0).friction_iterations(), 0u);
+    EXPECT_GT(distributed->cell(kCells - 1).friction_iterations(), 0u);
+    EXPECT_EQ(distributed->cell(kCells - 1).friction_iterations(),
+              undivided->cell(kCells - 1).friction_iterations());
+  }
   // The cells moved (pushed along z, carried along x by the shear), not a still state, and
   // touched.
   EXPECT_GT((undivided->cell(0).centroid_lu() - start_lu).norm(), 0.01);
@@ -134,16 +154,24 @@ TEST(ProcessesCoupledSimulation, TwentyCellsInSurfaceContactMoveAsOnTheUndivided
   expect_undivided_run(contact::ContactLaw::surface);
 }
 
+// The physiological preset's membrane and cytoplasm: each cell's friction solved by its owner
+// from the moments of nodes on several processes, the classes located on every process.
+TEST(ProcessesCoupledSimulation, TwentyViscousCellsInAViscousCytoplasmMoveAsOnTheUndividedLattice) {
+  expect_undivided_run(contact::ContactLaw::vertex, Membrane::viscous_in_viscous_cytoplasm);
+}
+
 // Written on every process of the run, resumed on the first half of them (4 -> 2, 3 -> 2, 2 -> 1):
 // the uninterrupted undivided run's state, bit for bit. Only rank 0 writes files (cli/main.cpp).
-TEST(ProcessesCoupledSimulation, CheckpointWrittenOnAllResumesOnHalfBitForBit) {
+// With membrane viscosity the friction's warm start rides in the checkpoint too.
+void expect_resumed_on_half(Membrane membrane) {
   constexpr std::size_t kBefore = 17;
   constexpr std::size_t kAfter = 13;
   const Communicator world = Communicator::world();
   io::set_process_writes_files(world.is_root());
   const auto file = testing::checkpoint_file(world, "rbcsim_mpi_coupled_");
+  const auto law = contact::ContactLaw::vertex;
   {
-    auto simulation = suspension(world);
+    auto simulation = suspension(world, law, membrane);
     advance(*simulation, kBefore);
     coupling::write_checkpoint(file, *simulation, "mpi test");
   }
@@ -151,12 +179,12 @@ TEST(ProcessesCoupledSimulation, CheckpointWrittenOnAllResumesOnHalfBitForBit) {
   const int half = (world.size() + 1) / 2;
   const Communicator part = world.split(world.rank() < half ? 0 : 1);
   if (world.rank() < half) {
-    auto resumed = suspension(part);
+    auto resumed = suspension(part, law, membrane);
     coupling::read_checkpoint(file, *resumed, "mpi test");
     advance(*resumed, kAfter);
     const auto state = state_of(*resumed);
     if (world.is_root()) {
-      auto uninterrupted = suspension(Communicator::self());
+      auto uninterrupted = suspension(Communicator::self(), law, membrane);
       advance(*uninterrupted, kBefore + kAfter);
       EXPECT_EQ(differing(state, state_of(*uninterrupted)), 0u)
           << "written on " << world.size() << ", resumed on " << half;
@@ -165,6 +193,14 @@ TEST(ProcessesCoupledSimulation, CheckpointWrittenOnAllResumesOnHalfBitForBit) {
   world.barrier();
   io::set_process_writes_files(true);
   if (world.is_root()) std::filesystem::remove(file);
+}
+
+TEST(ProcessesCoupledSimulation, CheckpointWrittenOnAllResumesOnHalfBitForBit) {
+  expect_resumed_on_half(Membrane::elastic);
+}
+
+TEST(ProcessesCoupledSimulation, ViscousCellsCheckpointedOnAllResumeOnHalfBitForBit) {
+  expect_resumed_on_half(Membrane::viscous_in_viscous_cytoplasm);
 }
 
 // The SHA-256 of a file's bytes (a differing snapshot prints two digests, not megabytes).
