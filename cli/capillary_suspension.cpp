@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cases/json_values.hpp"
 #include "cases/suspension_output.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -184,6 +185,7 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
                      {"hematocrit_profile", "hematocrit_profile.csv"},
                      {"membrane", coupling::membrane_series_file(intervals.format, true)},
                      {"fluid", coupling::fluid_series_file(intervals.format)}};
+  result["phase_ms_per_step"] = cases::phase_ms_per_step_json(run.phase_times);
   directory.write_json("result.json", result);
   if (common.json) {
     std::cout << result.dump(2) << '\n';

@@ -499,6 +499,7 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
     run.close_contact_steps = simulation.close_contact_steps();
     run.capped_contact_steps = simulation.capped_contact_steps();
     run.force_capped_steps = simulation.capped_steps_per_cell();
+    run.phase_times = simulation.phase_times();
   };
   const auto end = run_to_end(simulation);
   run.stop_reason = end.stop_reason;

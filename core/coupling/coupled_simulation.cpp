@@ -203,10 +203,10 @@ void CoupledSimulation::add_contact_forces() {
     }
     const contact::ContactSurfaces surfaces{contact_triangles_, contact_vertex_triangle_offsets_,
                                             contact_vertex_triangles_};
-    // Across processes each searches for the vertices of the cells it owns (owns_cell).
+    // Across processes each searches for the vertices of the cells it computes (computes_cell).
     std::vector<char> owned(cells_.size(), 1);
     if (distributed_) {
-      for (std::size_t k = 0; k < cells_.size(); ++k) owned[k] = owns_cell(k) ? 1 : 0;
+      for (std::size_t k = 0; k < cells_.size(); ++k) owned[k] = computes_cell(k) ? 1 : 0;
     }
     const parallel::Communicator& processes = parameters_.processes;
     const contact::ContactSplit split{
@@ -307,9 +307,6 @@ void CoupledSimulation::compute_cell_forces() {
   });
 }
 
-// The same code on the same positions gives the same forces on any process: the copies are the
-// values the owner computed, bit for bit, and the step goes on as if every process had computed
-// every cell.
 bool CoupledSimulation::owns_cell(std::size_t index) const {
   if (!distributed_) return true;
   const int nz = distributed_->global_grid().nz();
@@ -318,10 +315,28 @@ bool CoupledSimulation::owns_cell(std::size_t index) const {
   return plane >= distributed_->z_begin() && plane < distributed_->z_end();
 }
 
+bool CoupledSimulation::computes_cell(std::size_t index) const {
+  if (!distributed_) return true;
+  // Cell k goes to the process whose share [r V / P, (r + 1) V / P) of the V vertices holds the
+  // cell's first vertex (cells in index order): the same deal on every process.
+  std::size_t first_vertex = 0;
+  std::size_t total = 0;
+  for (std::size_t k = 0; k < cells_.size(); ++k) {
+    if (k == index) first_vertex = total;
+    total += cells_[k].vertex_count();
+  }
+  const auto processes = static_cast<std::size_t>(parameters_.processes.size());
+  const auto rank = static_cast<std::size_t>(parameters_.processes.rank());
+  return first_vertex * processes >= rank * total && first_vertex * processes < (rank + 1) * total;
+}
+
+// The same code on the same positions gives the same forces on any process: the copies are the
+// values the computing process found, bit for bit, and the step goes on as if every process had
+// computed every cell.
 bool CoupledSimulation::compute_owned_cell_forces() {
   std::vector<std::size_t> owned;
   for (std::size_t k = 0; k < cells_.size(); ++k) {
-    if (owns_cell(k)) owned.push_back(k);
+    if (computes_cell(k)) owned.push_back(k);
   }
   const auto failures = run_on_cells(owned, [this](std::size_t k) {
     cells_[k].compute_membrane_forces(frame_);
@@ -418,11 +433,12 @@ void CoupledSimulation::apply_membrane_friction() {
 
 // Across processes every process holds every cell, but the nodes under a cell lie on several of
 // them. Each process supplies the pre-collision moments of its own nodes under every cell
-// (copies, no sums), the owner of a cell solves it, and the copies of the cell elsewhere adopt
-// that solve; every process then adds every cell's momentum at its own nodes, cell after cell,
-// as apply_membrane_friction adds them on the undivided solver. So the cells, their warm starts
-// and the fluid stay those of one process, bit for bit. If a solve fails anywhere, every process
-// also solves the cells it does not own, so that all stop on the same lowest failing cell.
+// (copies, no sums), the process that computes a cell (computes_cell) solves it, and the copies
+// of the cell elsewhere adopt that solve; every process then adds every cell's momentum at its own
+// nodes, cell after cell, as apply_membrane_friction adds them on the undivided solver. So the
+// cells, their warm starts and the fluid stay those of one process, bit for bit. If a solve fails
+// anywhere, every process also solves the cells it does not own, so that all stop on the same
+// lowest failing cell.
 void CoupledSimulation::apply_distributed_membrane_friction() {
   if (!distributed_->populations_natural()) return;  // the same step on every process
   std::vector<std::size_t> with_friction;
@@ -464,7 +480,7 @@ void CoupledSimulation::apply_distributed_membrane_friction() {
   };
   std::vector<std::size_t> owned;
   std::vector<std::size_t> copies;
-  for (const std::size_t k : with_friction) (owns_cell(k) ? owned : copies).push_back(k);
+  for (const std::size_t k : with_friction) (computes_cell(k) ? owned : copies).push_back(k);
   std::vector<std::exception_ptr> failures(cells_.size());
   const auto record = [&failures](std::span<const std::size_t> indices,
                                   const std::vector<std::exception_ptr>& found) {
@@ -488,7 +504,7 @@ void CoupledSimulation::apply_distributed_membrane_friction() {
   const std::vector<double> solutions = processes.gather_to_all(own_solutions);
   std::span<const double> rest(solutions);
   std::size_t adopted = 0;
-  while (!rest.empty()) {  // an owner adopts its own solve too: the same values
+  while (!rest.empty()) {  // the solving process adopts its own solve too: the same values
     const auto k = static_cast<std::size_t>(rest.front());
     rest = cells_.at(k).adopt_friction_solution(rest.subspan(1), step);
     ++adopted;

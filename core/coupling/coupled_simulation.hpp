@@ -17,15 +17,15 @@
 //
 // Across processes (CouplingParameters::processes, more than one): the fluid runs on the
 // distributed lattice (parallel/distributed_fluid.hpp), cut from the undivided solver the case set
-// up; every process holds every cell; with several cells, each cell's membrane and hook forces
-// are computed by the process holding its centroid's plane and copied to all (contact is computed
-// everywhere); each process spreads the forces onto its own planes and interpolates the vertices
-// in its planes, and the velocities are copied to all (parallel/distributed_ibm.hpp); with membrane
-// viscosity, the owner of a cell solves its friction step from the moments every process supplies
-// for its own nodes, and every process adds the momentum at its own nodes; with a viscosity
-// contrast, every process locates every cytoplasm and its slab takes its planes of the classes.
-// The state is
-// bit-identical to one process's, on any number of processes. Observers and stop criteria run on
+// up; every process holds every cell, and the cells are dealt out among the processes by vertex
+// count (computes_cell). With several cells, each cell's membrane and hook forces and its surface
+// contact search are computed by its process and copied to all; each process spreads the forces
+// onto its own planes and interpolates the vertices in its planes, and the velocities are copied
+// to all (parallel/distributed_ibm.hpp); with membrane viscosity, a cell's process solves its
+// friction step from the moments every process supplies for its own nodes, and every process adds
+// the momentum at its own nodes; with a viscosity contrast, every process locates every cytoplasm
+// and its slab takes its planes of the classes. The state is bit-identical to one process's, on
+// any number of processes. Observers and stop criteria run on
 // every process alike; only rank 0 writes files.
 //
 // An instability stops the run (docs/physics.md, "Failures"): if a run directory is set, a dump
@@ -217,9 +217,14 @@ class CoupledSimulation {
   // (hdf5_snapshot.cpp) reads without gathering.
   const parallel::DistributedFluid* distributed_fluid() const { return distributed_.get(); }
   // Whether this process owns cell `index`: across processes, the one whose planes hold its
-  // centroid, which computes its membrane forces (with several cells) and writes its part of a
-  // snapshot; on one process, every cell.
+  // centroid, which writes the cell in its part of an HDF5 snapshot; on one process, every cell.
   bool owns_cell(std::size_t index) const;
+  // Whether this process computes cell `index`'s membrane and hook forces, its contact search and
+  // its friction solve for all (the others copy them): while every process holds every cell, the
+  // cells are dealt out in contiguous runs of about equal vertex counts, so that the work is
+  // balanced wherever the cells are (by their centroids, a tube along x cut into z-slabs would
+  // give most cells to the process holding its axis). On one process, every cell.
+  bool computes_cell(std::size_t index) const;
   // Across processes (collective): the distributed fluid's state copied into fluid() on every
   // process, unless it already holds this step's; nothing on one process.
   void gather_fluid();
