@@ -317,17 +317,22 @@ bool CoupledSimulation::owns_cell(std::size_t index) const {
 
 bool CoupledSimulation::computes_cell(std::size_t index) const {
   if (!distributed_) return true;
-  // Cell k goes to the process whose share [r V / P, (r + 1) V / P) of the V vertices holds the
-  // cell's first vertex (cells in index order): the same deal on every process.
-  std::size_t first_vertex = 0;
-  std::size_t total = 0;
-  for (std::size_t k = 0; k < cells_.size(); ++k) {
-    if (k == index) first_vertex = total;
-    total += cells_[k].vertex_count();
+  if (computed_here_.size() != cells_.size()) {  // cells were added: deal them out again
+    // Cell k goes to the process whose share [r V / P, (r + 1) V / P) of the V vertices holds
+    // the cell's first vertex (cells in index order): the same deal on every process.
+    std::size_t total = 0;
+    for (const Cell& cell : cells_) total += cell.vertex_count();
+    const auto processes = static_cast<std::size_t>(parameters_.processes.size());
+    const auto rank = static_cast<std::size_t>(parameters_.processes.rank());
+    computed_here_.assign(cells_.size(), 0);
+    std::size_t first_vertex = 0;
+    for (std::size_t k = 0; k < cells_.size(); ++k) {
+      computed_here_[k] =
+          first_vertex * processes >= rank * total && first_vertex * processes < (rank + 1) * total;
+      first_vertex += cells_[k].vertex_count();
+    }
   }
-  const auto processes = static_cast<std::size_t>(parameters_.processes.size());
-  const auto rank = static_cast<std::size_t>(parameters_.processes.rank());
-  return first_vertex * processes >= rank * total && first_vertex * processes < (rank + 1) * total;
+  return computed_here_.at(index) != 0;
 }
 
 // The same code on the same positions gives the same forces on any process: the copies are the
@@ -437,7 +442,7 @@ void CoupledSimulation::apply_membrane_friction() {
 // of the cell elsewhere adopt that solve; every process then adds every cell's momentum at its own
 // nodes, cell after cell, as apply_membrane_friction adds them on the undivided solver. So the
 // cells, their warm starts and the fluid stay those of one process, bit for bit. If a solve fails
-// anywhere, every process also solves the cells it does not own, so that all stop on the same
+// anywhere, every process also solves the cells it does not compute, so that all stop on the same
 // lowest failing cell.
 void CoupledSimulation::apply_distributed_membrane_friction() {
   if (!distributed_->populations_natural()) return;  // the same step on every process

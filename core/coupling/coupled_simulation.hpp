@@ -260,9 +260,9 @@ class CoupledSimulation {
                                                const Body& body);
   // Phase 1: every cell's membrane and external forces (the hooks).
   void compute_cell_forces();
-  // Phase 1 across processes with several cells: each process computes the cells whose centroid
-  // lies in its planes and takes the others' as copies (cell.hpp, adopt_forces). False, having
-  // adopted nothing, if a cell failed on any process.
+  // Phase 1 across processes with several cells: each process computes its cells (computes_cell)
+  // and takes the others' as copies (cell.hpp, adopt_forces). False, having adopted nothing, if a
+  // cell failed on any process.
   bool compute_owned_cell_forces();
   void add_contact_forces();
   void build_contact_surfaces();
@@ -311,6 +311,7 @@ class CoupledSimulation {
   // Every cell's vertices one after the other: the contact's input and output.
   std::vector<Vec3> contact_positions_um_;
   std::vector<std::uint32_t> contact_owners_;
+  mutable std::vector<char> computed_here_;  // computes_cell's deal, per cell
   std::vector<Vec3> contact_forces_pN_;
   std::vector<std::array<std::uint32_t, 3>> contact_triangles_;  // the surface law's
   std::vector<std::uint32_t> contact_vertex_triangle_offsets_;

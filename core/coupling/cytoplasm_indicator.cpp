@@ -30,11 +30,13 @@ std::string positions_name(std::size_t cell) {
 
 bool CytoplasmIndicator::update(std::span<const Cell> cells, const ibm::GridView& grid,
                                 std::span<lattice::ViscosityClass> classes) {
+  bool rewritten = false;
   if (restored_) {
     recompute(cells, grid, classes);  // from the restored positions
     restored_ = false;
+    rewritten = true;
   }
-  if (!due(cells)) return false;
+  if (!due(cells)) return rewritten;
   computed_at_.resize(cells.size());
   for (std::size_t c = 0; c < cells.size(); ++c) {
     const auto positions = cells[c].positions_lu();

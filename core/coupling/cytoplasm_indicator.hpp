@@ -31,8 +31,8 @@ class CytoplasmIndicator {
   CytoplasmIndicator(double half_width, double update_displacement_lu)
       : half_width_(half_width), update_displacement_lu_(update_displacement_lu) {}
 
-  // Before a fluid step: recomputes `classes` (one per node of `grid`) if it is due. Returns
-  // whether it recomputed.
+  // Before a fluid step: recomputes `classes` (one per node of `grid`) if it is due, or if a
+  // restore_state left them to be rewritten. Returns whether it wrote them.
   bool update(std::span<const Cell> cells, const ibm::GridView& grid,
               std::span<lattice::ViscosityClass> classes);
 

@@ -6,8 +6,8 @@
 # (output.format=hdf5, each process its part; the same bytes on 1 to 4 processes), which
 # check_hdf5_output.py reads with h5py against the VTK of the same run; the sheared suspension
 # writes VTK gathered onto rank 0. The physiological preset (membrane viscosity, a viscous
-# cytoplasm) in a shear and a tube suspension. A capillary checkpointed on 4 processes resumes on
-# 2 and on 1 to the same files. Settings not distributed yet stop with exit 2, one line, before
+# cytoplasm) in a shear, a tube suspension and a stretch. A capillary checkpointed on 4 processes
+# resumes on 2 and on 1 to the same files, with either preset. Settings not distributed yet stop with exit 2, one line, before
 # any output.
 # Usage: commands_on_processes.sh MPIEXEC RBCSIM [FORMAT]
 # FORMAT: hdf5 (default) or vtk, for a build without HDF5: the capillary and the tube suspension
@@ -85,35 +85,48 @@ fi
 # Checkpoints across process counts: the capillary written on 4 processes every 43 steps (the
 # last at step 301 of about 330, odd: the AA kernel's swapped layout), resumed on 2 and on 1; both
 # rewrite the straight run's time series and snapshots byte for byte. 330 steps leave the cell
-# upstream of the narrow section: a "failed" run, exit 1, each time.
+# upstream of the narrow section: a "failed" run, exit 1, each time. Both presets: the
+# physiological one's friction warm start and viscosity classes must come back from the
+# checkpoint on any process count.
 # output.format=auto: HDF5 on 4 processes, and a resume on one goes on in HDF5 (the series it
 # finds), not in one process's VTK.
-checkpointed="$capillary --set output.format=auto --set capillary.max_time_s=5e-5 --threads 1"
-# shellcheck disable=SC2086
-"$mpiexec" -n 4 --oversubscribe "$rbcsim" $checkpointed --checkpoint-every 43 --output written \
-  >/dev/null 2>written.err
-code=$?
-if [ $code -ne 1 ] || [ ! -f written/checkpoint.bin ]; then
-  echo "capillary with checkpoints on 4 processes: exit $code"; cat written.err; failed=1
-else
+# resumes_alike NAME ARGUMENTS...
+resumes_alike() {
+  name=$1
+  shift
+  # shellcheck disable=SC2068
+  "$mpiexec" -n 4 --oversubscribe "$rbcsim" $@ --checkpoint-every 43 --output "$name.written" \
+    >/dev/null 2>"$name.written.err"
+  code=$?
+  if [ $code -ne 1 ] || [ ! -f "$name.written/checkpoint.bin" ]; then
+    echo "$name with checkpoints on 4 processes: exit $code"; cat "$name.written.err"; failed=1
+    return
+  fi
   for processes in 2 1; do
-    cp -r written "resumed$processes"
-    rm "resumed$processes/result.json" "resumed$processes/capillary_timeseries.csv"
+    resumed="$name.resumed$processes"
+    cp -r "$name.written" "$resumed"
+    rm "$resumed/result.json" "$resumed/capillary_timeseries.csv"
     launcher=""
     [ "$processes" -gt 1 ] && launcher="$mpiexec -n $processes --oversubscribe"
-    # shellcheck disable=SC2086
-    $launcher "$rbcsim" $checkpointed --resume "resumed$processes" >/dev/null 2>resumed.err
+    # shellcheck disable=SC2068,SC2086
+    $launcher "$rbcsim" $@ --resume "$resumed" >/dev/null 2>resumed.err
     code=$?
-    [ $code -eq 1 ] || { echo "resumed on $processes: exit $code"; cat resumed.err; failed=1; }
+    [ $code -eq 1 ] || { echo "$name resumed on $processes: exit $code"; cat resumed.err; failed=1; }
     # auto wrote HDF5 on 4 processes when built with it, VTK otherwise.
-    series="cells.xdmf fluid.xdmf $(cd written && find h5 -type f 2>/dev/null)"
-    [ -f written/cells.xdmf ] || series="cell0.pvd fluid.pvd $(cd written && find vtk -type f)"
+    series="cells.xdmf fluid.xdmf $(cd "$name.written" && find h5 -type f 2>/dev/null)"
+    [ -f "$name.written/cells.xdmf" ] ||
+      series="cell0.pvd fluid.pvd $(cd "$name.written" && find vtk -type f)"
     for file in capillary_timeseries.csv $series; do
-      cmp -s "written/$file" "resumed$processes/$file" ||
-        { echo "written on 4, resumed on $processes: $file differs"; failed=1; }
+      cmp -s "$name.written/$file" "$resumed/$file" ||
+        { echo "$name written on 4, resumed on $processes: $file differs"; failed=1; }
     done
   done
-fi
+}
+checkpointed="$capillary --set output.format=auto --set capillary.max_time_s=5e-5 --threads 1"
+# shellcheck disable=SC2086
+resumes_alike checkpointed $checkpointed
+# shellcheck disable=SC2086
+resumes_alike physiological_checkpointed $checkpointed --preset physiological
 
 suspension="--set mesh.subdivisions=2 --set mesh.method=parametric --set lattice.spacing_um=1
   --set suspension.contact_range_um=1.75 --set lattice.block_planes=2"
@@ -133,14 +146,19 @@ if [ "$format" = hdf5 ]; then
 fi
 
 # The physiological preset: membrane viscosity (each cell's implicit friction step over fluid nodes
-# on several processes) and a viscous cytoplasm (per-node viscosity classes), one cell sheared and
-# a two-cell suspension in the tube.
+# on several processes) and a viscous cytoplasm (per-node viscosity classes): one cell sheared, a
+# two-cell suspension in the tube, one cell stretched.
 # shellcheck disable=SC2086
 same_as_one physiological_shear "2" shear $coarse_cell --set shear.max_reynolds_number=0.4 \
   --set shear.width_diameters=1.6 --set shear.gap_diameters=2 --max-strain 1 --rates 500 \
   --set lattice.block_planes=2 --preset physiological
 # shellcheck disable=SC2086
 same_as_one physiological_tube "2" $tube --set output.format=vtk --preset physiological
+# shellcheck disable=SC2086
+same_as_one physiological_stretch "2" stretch --set mesh.subdivisions=2 --set mesh.method=parametric \
+  --set lattice.spacing_um=1 --set stretch.fluid.kinematic_viscosity_m2_per_s=3.7e-7 \
+  --set stretch.fluid.steady_relative_rate_per_s=20 --mode fluid --forces 10 \
+  --set lattice.block_planes=2 --preset physiological
 
 # What does not run across processes yet: exit 2, one line naming the setting, no run directory.
 refused() {

@@ -58,7 +58,6 @@ std::unique_ptr<coupling::CoupledSimulation> suspension(
   coupling::CouplingParameters coupling;
   coupling.processes = processes;
   coupling.block_planes = 2;
-  coupling.cytoplasm_update_lu = 0.0;
   auto simulation = std::make_unique<coupling::CoupledSimulation>(
       sheared_box(membrane), coupling::testing::plasma_units(), std::move(coupling));
   auto capsule = coupling::testing::capsule_parameters(300.0);
