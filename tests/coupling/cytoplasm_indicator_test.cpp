@@ -10,7 +10,9 @@
 #include <span>
 #include <vector>
 
+#include "common/state_archive.hpp"
 #include "coupling/coupling_fixtures.hpp"
+#include "coupling/cytoplasm_indicator.hpp"
 #include "ibm/inside_indicator.hpp"
 #include "mesh/geometry.hpp"
 
@@ -117,6 +119,28 @@ TEST(CytoplasmIndicator, ClassesLagTheCellByLessThanTheUpdateDisplacement) {
   std::printf("60 steps, %d recomputations of the indicator\n", recomputations);
   EXPECT_LT(recomputations, 20);
   EXPECT_GT(recomputations, 5);
+}
+
+// An update writes the classes when it recomputes them, and also when a restored indicator
+// rebuilds them from the checkpoint's positions with no recomputation due: a caller that copies
+// the classes elsewhere when they are written (the slabs of the distributed lattice) must hear
+// of both.
+TEST(CytoplasmIndicator, UpdateReportsTheClassesRebuiltAfterARestore) {
+  auto simulation = drifting_sphere(5.0, CouplingParameters{}.cytoplasm_update_lu, 0.0);
+  const auto cells = simulation->cells();
+  const ibm::GridView grid = simulation->grid_view();
+  std::vector<lattice::ViscosityClass> classes(simulation->fluid().grid().node_count(), 0);
+  CytoplasmIndicator indicator(1.0, CouplingParameters{}.cytoplasm_update_lu);
+  EXPECT_TRUE(indicator.update(cells, grid, classes));   // the first: computed
+  EXPECT_FALSE(indicator.update(cells, grid, classes));  // nothing moved: not due
+  StateArchive archive("test");
+  indicator.save_state(archive);
+  CytoplasmIndicator restored(1.0, CouplingParameters{}.cytoplasm_update_lu);
+  restored.restore_state(archive, cells);
+  std::vector<lattice::ViscosityClass> rebuilt(classes.size(), 0);
+  EXPECT_TRUE(restored.update(cells, grid, rebuilt));  // not due, but rebuilt
+  EXPECT_EQ(rebuilt, classes);
+  EXPECT_FALSE(restored.update(cells, grid, rebuilt));
 }
 
 TEST(CytoplasmIndicator, NoContrastNoClasses) {
