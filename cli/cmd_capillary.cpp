@@ -266,7 +266,6 @@ std::optional<nlohmann::ordered_json> finished_release(const std::filesystem::pa
 void run_capillary_command(const CapillaryOptions& options) {
   const auto request = capillary_request(options);
   const auto config = config::resolve_config(request);
-  setup::require_runs_across_processes(config, /*curved_walls=*/true);
   if (wants_suspension(config)) {
     run_suspension_command(request, config, options.common, options.checkpoint);
     return;

@@ -218,7 +218,6 @@ std::vector<cases::ShearPoint> ended_points(const std::vector<cases::ShearPoint>
 void run_shear_command(const ShearOptions& options) {
   const auto request = shear_request(options);
   const auto config = config::resolve_config(request);
-  setup::require_runs_across_processes(config);
   if (wants_sheared_suspension(config)) {
     run_sheared_suspension_command(request, config, options.common, options.checkpoint);
     return;

@@ -179,7 +179,6 @@ void require_stretch_runs_across_processes(const config::Config& config) {
                      "the quasi-static stretch has no lattice to run across processes: run it on "
                      "one process (without mpirun), or use --mode fluid");
   }
-  setup::require_runs_across_processes(config);
 }
 
 void run_stretch_command(const StretchOptions& options) {

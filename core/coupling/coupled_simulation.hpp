@@ -76,8 +76,7 @@ struct CouplingParameters {
   // Where failure dumps go (and what observers may write to); empty: no dump.
   std::filesystem::path run_directory;
   // The processes the fluid is cut across: one (the default) steps the undivided solver, several
-  // its slabs. Not distributed yet (InputError): curved wall links under an interpolated wall
-  // rule.
+  // its slabs.
   parallel::Communicator processes = parallel::Communicator::self();
   // lattice.block_planes: the z-planes of one block of the decomposition (at least 2).
   int block_planes = 4;

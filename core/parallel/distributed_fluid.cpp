@@ -4,6 +4,7 @@
 #include "io/sha256.hpp"
 #include "io/state_archive_file.hpp"
 #include "lattice/d3q19.hpp"
+#include "lattice/wall_link.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -67,17 +68,12 @@ HaloScheme chosen_scheme(HaloScheme scheme, const lattice::FluidParameters& para
 }
 
 // The nodes of an undivided solver that are not fluid (walls, velocity inlets, pressure outlets),
-// none without any. Every rule but the interpolated walls' is the boundary node's own business;
-// those read the node behind, which may sit in a ghost plane the crossing populations leave
-// stale, so curved wall links are refused unless the rule ignores them (half-way).
+// none without any. Every rule is the boundary node's own business, but the interpolated walls'
+// also read the node behind (x + c), which may sit in a ghost plane: they take the full-state
+// halo (curved_walls_of), whose inner ghost plane collides exactly as its owner does. (The
+// crossing populations include the one read there and gave the same bits in the tests, but
+// their exactness for it is not argued; the full state's is.)
 WallPredicate solid_nodes_of(const lattice::FluidSolver& whole) {
-  const std::string& rule = whole.parameters().wall_rule;
-  if (whole.boundaries().has_wall_fractions() && rule != "halfway") {
-    throw InputError("lattice.wall_rule",
-                     rule +
-                         " (curved wall links) does not run on the distributed lattice yet: use "
-                         "halfway or run on one process (without mpirun)");
-  }
   const auto& kinds = whole.solid_mask();
   if (std::ranges::none_of(kinds, [](std::uint8_t kind) { return kind != 0; })) return {};
   auto mask = std::make_shared<const std::vector<std::uint8_t>>(kinds);
@@ -85,12 +81,18 @@ WallPredicate solid_nodes_of(const lattice::FluidSolver& whole) {
   return [mask, grid](int x, int y, int z) { return (*mask)[grid.index(x, y, z)] != 0; };
 }
 
+// Whether `whole` has wall links that its wall rule does not close half-way (curved walls).
+bool curved_walls_of(const lattice::FluidSolver& whole) {
+  return whole.boundaries().has_wall_fractions() && whole.parameters().wall_rule != "halfway";
+}
+
 }  // namespace
 
 DistributedFluid::DistributedFluid(Communicator communicator, const lattice::FluidSolver& whole,
                                    int block_planes)
     : DistributedFluid(std::move(communicator), whole.grid(), block_planes, whole.parameters(),
-                       solid_nodes_of(whole)) {
+                       solid_nodes_of(whole),
+                       curved_walls_of(whole) ? HaloScheme::full_state : HaloScheme::automatic) {
   // The constructor made every solid node a resting wall; the moving ones and the outlets, with
   // their velocities and densities, as the undivided solver has them.
   const lattice::BoundaryMap& boundaries = whole.boundaries();
@@ -110,6 +112,7 @@ DistributedFluid::DistributedFluid(Communicator communicator, const lattice::Flu
       }
     }
   }
+  if (boundaries.has_wall_fractions()) copy_wall_links(whole);
   StateArchive state("the undivided fluid");
   whole.save_state(state);
   restore_state(state);
@@ -190,6 +193,30 @@ void DistributedFluid::initialise_equilibrium(
     }
   }
   local_.initialise_equilibrium(density, velocity);
+}
+
+void DistributedFluid::copy_wall_links(const lattice::FluidSolver& whole) {
+  // Every link of the slab and its ghost planes whose fraction the undivided solver holds other
+  // than half-way (links never set are half-way there and here alike).
+  const lattice::BoundaryMap& boundaries = whole.boundaries();
+  const lattice::LatticeGrid& grid = local_.grid();
+  std::vector<lattice::WallLink> links;
+  for (int z = 0; z < grid.nz(); ++z) {
+    const int global_z = lattice::LatticeGrid::wrap(z_begin() - kHaloPlanes + z, global_.nz());
+    for (int y = 0; y < grid.ny(); ++y) {
+      for (int x = 0; x < grid.nx(); ++x) {
+        const std::size_t node = global_.index(x, y, global_z);
+        if (!boundaries.is_fluid(node)) continue;
+        for (int i = 1; i < lattice::kDirections; ++i) {
+          const double fraction = boundaries.wall_fraction(node, i);
+          if (fraction != lattice::kHalfwayFraction) {
+            links.push_back({grid.index(x, y, z), i, fraction});
+          }
+        }
+      }
+    }
+  }
+  local_.set_wall_links(links);
 }
 
 std::int64_t DistributedFluid::own_local_index(std::size_t global_node) const {

@@ -27,9 +27,9 @@
 // highest slab. Checkpoints take the undivided solver's form (save_state), so they do not depend on
 // the process count; they pass through rank 0 whole (MPI counts are ints: at most 2^31 - 1
 // values, some 113 million nodes, refused beyond). Moving walls, velocity inlets and pressure
-// outlets come with an undivided solver cut into slabs (its constructor), and a viscosity contrast
-// with its classes (set_viscosity_classes). Not distributed yet: interpolated wall links (refused
-// with InputError). Densities
+// outlets come with an undivided solver cut into slabs (its constructor), and so do curved walls
+// (interpolated wall links, which read the node behind and therefore take the full-state halo),
+// and a viscosity contrast with its classes (set_viscosity_classes). Densities
 // and velocities are the slab's own; the ghost planes' are not kept (distributed_ibm.hpp exchanges
 // the velocities it needs).
 #pragma once
@@ -85,8 +85,8 @@ class DistributedFluid {
   // The undivided solver `whole` (the same on every process, collective) cut into slabs: its
   // lattice, parameters, boundaries (walls resting or moving, velocity inlets, pressure outlets)
   // and state (populations, moments, step count), so that a case set up for one process runs on
-  // many. Throws rbcsim::InputError on every process for curved wall links under an interpolated
-  // wall rule (not distributed yet) and as the constructor above.
+  // many; curved wall links under an interpolated rule take the full-state halo. Throws as the
+  // constructor above.
   DistributedFluid(Communicator communicator, const lattice::FluidSolver& whole, int block_planes);
   HaloScheme halo_scheme() const { return scheme_; }
 
@@ -195,6 +195,9 @@ class DistributedFluid {
   // The reverse, ghost planes included (wrapped around the lattice): rank 0's global field cut
   // into every process's local field.
   std::vector<double> scatter_field(std::span<const double> global, int components) const;
+  // The undivided solver's curved wall links (other than half-way) of the slab and its ghost
+  // planes, into the local solver.
+  void copy_wall_links(const lattice::FluidSolver& whole);
   // The populations of `planes` planes from local_z, and their force density when `force`.
   std::vector<double> pack_planes(int local_z, int planes, bool force) const;
   void unpack_planes(int local_z, int planes, const std::vector<double>& values, bool force);

@@ -53,16 +53,6 @@ coupling::CouplingParameters coupling_parameters_from(const config::Config& conf
   return parameters;
 }
 
-void require_runs_across_processes(const config::Config& config, bool curved_walls) {
-  if (parallel::Communicator::world().size() == 1) return;
-  if (curved_walls && config.string("lattice.wall_rule") != "halfway") {
-    throw InputError("lattice.wall_rule",
-                     config.string("lattice.wall_rule") +
-                         " (curved wall links) does not run across processes yet: use halfway or "
-                         "run on one process (without mpirun)");
-  }
-}
-
 coupling::SnapshotFormat snapshot_format_from(const config::Config& config,
                                               const std::filesystem::path& directory) {
   const std::string format = config.string("output.format");

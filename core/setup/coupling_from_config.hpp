@@ -22,13 +22,6 @@ lattice::FluidParameters fluid_parameters_from(const config::Config& config);
 coupling::CouplingParameters coupling_parameters_from(const config::Config& config,
                                                       const std::filesystem::path& run_directory);
 
-// Under mpirun with several processes: InputError naming the first setting of `config` the
-// distributed lattice does not run yet (physics.cytoplasm_viscosity_ratio other than 1, membrane
-// viscosity in membrane.forces, and for a case with curved walls an interpolated
-// lattice.wall_rule), so that a command stops before it writes anything. The simulation checks
-// again (CoupledSimulation), with the case's geometry.
-void require_runs_across_processes(const config::Config& config, bool curved_walls = false);
-
 // output.format resolved for a run writing its snapshots into `directory` (auto: the format of the
 // series already there when resuming, so that a run resumed on another process count goes on in
 // its own; otherwise hdf5 across processes when built with it, else vtk). InputError naming

@@ -296,6 +296,47 @@ CoupledState run_coupled_distributed(std::string_view kernel, std::size_t steps,
   return state;
 }
 
+std::unique_ptr<lattice::FluidSolver> make_tube_channel(const std::string& kernel,
+                                                        const std::string& wall_rule,
+                                                        std::size_t steps) {
+  const lattice::LatticeGrid grid(8, 6, 12);
+  lattice::FluidParameters parameters;
+  parameters.kernel = kernel;
+  parameters.wall_rule = wall_rule;
+  auto whole = std::make_unique<lattice::FluidSolver>(grid, parameters);
+  std::vector<lattice::WallLink> links;
+  for (int z = 0; z < grid.nz(); ++z) {
+    for (int x = 0; x < grid.nx(); ++x) {
+      whole->set_wall(grid.index(x, 0, z));
+      whole->set_wall(grid.index(x, grid.ny() - 1, z), {0.004, 0.0, 0.001});
+      for (int i = 1; i < lattice::kDirections; ++i) {
+        const int c_y = lattice::kVelocities[i][1];
+        if (c_y == -1) links.push_back({grid.index(x, 1, z), i, 0.3});
+        if (c_y == 1) links.push_back({grid.index(x, grid.ny() - 2, z), i, 0.7});
+      }
+    }
+    for (int y = 1; y < grid.ny() - 1; ++y) {
+      whole->set_velocity_inlet(grid.index(0, y, z),
+                                {0.01 * y * (grid.ny() - 1 - y) / 4.0, 0.0, 0.0});
+      whole->set_pressure_outlet(grid.index(grid.nx() - 1, y, z), 1.0);
+    }
+  }
+  if (whole->set_wall_links(links) == 0) throw std::logic_error("tube channel: no wall links");
+  whole->initialise_equilibrium(1.0, {0.005, 0.0, 0.0});
+  whole->advance(steps);
+  return whole;
+}
+
+std::vector<double> at_fluid_nodes(const lattice::FluidSolver& solver,
+                                   std::span<const double> stored_populations) {
+  const std::size_t nodes = solver.grid().node_count();
+  std::vector<double> kept;
+  for (std::size_t k = 0; k < stored_populations.size(); ++k) {
+    if (solver.boundaries().is_fluid(k % nodes)) kept.push_back(stored_populations[k]);
+  }
+  return kept;
+}
+
 std::filesystem::path checkpoint_file(const Communicator& world, const std::string& prefix) {
   double root_pid = static_cast<double>(::getpid());
   world.broadcast_from_root(std::span<double>(&root_pid, 1));

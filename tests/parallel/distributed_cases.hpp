@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 #include <ostream>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -73,6 +74,21 @@ CoupledState run_coupled_undivided(std::string_view kernel, std::size_t steps);
 // Rank 0 gets the state; the other ranks empty vectors.
 CoupledState run_coupled_distributed(std::string_view kernel, std::size_t steps,
                                      const Communicator& communicator);
+
+// A tube flow as the capillary sets it up, on 8 x 6 x 12 nodes: a velocity inlet (a moving wall)
+// at x = 0 with a profile, a pressure outlet at x = nx - 1, resting walls at y = 0 and moving ones
+// at y = ny - 1, every link into them cut at 0.3 (y = 0) or 0.7 (y = ny - 1), straight and
+// diagonal, some of them across z (so that the node behind a link lies on the next plane); the
+// kernel and wall rule given (half-way: the links are closed half-way anyway). Then `steps`
+// steps from a uniform flow.
+std::unique_ptr<lattice::FluidSolver> make_tube_channel(const std::string& kernel,
+                                                        const std::string& wall_rule,
+                                                        std::size_t steps);
+// The stored populations at the fluid nodes only (a solid node's are never read; the reference
+// kernel's second buffer keeps there what its solver was built with, which a restored state does
+// not carry), from FluidSolver::stored_populations(0, node_count)'s order.
+std::vector<double> at_fluid_nodes(const lattice::FluidSolver& solver,
+                                   std::span<const double> stored_populations);
 
 // A checkpoint file every process names alike (collective): rank 0's process id, after `prefix`,
 // in the temporary directory.

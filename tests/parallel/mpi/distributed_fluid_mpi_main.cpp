@@ -38,6 +38,26 @@ INSTANTIATE_TEST_SUITE_P(DistributedFluid, Processes,
                          ::testing::ValuesIn(testing::distributed_cases()),
                          [](const auto& parameter) { return parameter.param.name; });
 
+// The tube channel with curved walls (Bouzidi links, some across z: the node behind on another
+// process's plane) cut from the undivided solver: the full-state halo, the same state on any
+// number of processes.
+TEST(ProcessesCurvedWalls, TubeChannelStepsOnAsTheUndividedSolverBitForBit) {
+  const Communicator world = Communicator::world();
+  for (const std::string kernel : {"optimised", "reference"}) {
+    auto whole = testing::make_tube_channel(kernel, "bouzidi", 5);
+    DistributedFluid cut(world, *whole, 2);
+    EXPECT_EQ(cut.halo_scheme(), HaloScheme::full_state);
+    cut.advance(21);
+    const auto gathered = cut.gather_stored_populations();
+    if (!world.is_root()) continue;
+    whole->advance(21);
+    const std::size_t nodes = whole->grid().node_count();
+    EXPECT_EQ(testing::at_fluid_nodes(*whole, gathered),
+              testing::at_fluid_nodes(*whole, whole->stored_populations(0, nodes)))
+        << kernel << " kernel on " << world.size() << " processes";
+  }
+}
+
 // Points spread and moved across block boundaries and the periodic seam: on any number of
 // processes as on the undivided lattice.
 class ProcessesCoupled : public ::testing::TestWithParam<std::string> {};
