@@ -24,8 +24,8 @@
 //
 // Deterministic: the nearest points are found per vertex in parallel, each writing only its own
 // record; the forces are then added serially in the order of (vertex, other cell). Across
-// processes (ContactSplit) each searches for the vertices of its own cells, and every process adds
-// everyone's records in that same order: the forces of one process, bit for bit.
+// processes (ContactSplit) each searches for the vertices of the cells it computes, and every
+// process adds everyone's records in that same order: the forces of one process, bit for bit.
 #pragma once
 
 #include <array>

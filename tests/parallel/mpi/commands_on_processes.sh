@@ -7,8 +7,9 @@
 # check_hdf5_output.py reads with h5py against the VTK of the same run; the sheared suspension
 # writes VTK gathered onto rank 0. The physiological preset (membrane viscosity, a viscous
 # cytoplasm) in a shear, a tube suspension and a stretch. A capillary checkpointed on 4 processes
-# resumes on 2 and on 1 to the same files, with either preset. Settings not distributed yet stop with exit 2, one line, before
-# any output.
+# resumes on 2 and on 1 to the same files, with either preset. The capillary with curved walls
+# (Bouzidi) on 2. The commands with no lattice to cut (the quasi-static stretch, calibrate) stop
+# with exit 2, one line, before any output.
 # Usage: commands_on_processes.sh MPIEXEC RBCSIM [FORMAT]
 # FORMAT: hdf5 (default) or vtk, for a build without HDF5: the capillary and the tube suspension
 # then write VTK too, and the HDF5 checks are left out.

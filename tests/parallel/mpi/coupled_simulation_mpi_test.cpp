@@ -148,13 +148,15 @@ TEST(ProcessesCoupledSimulation, TwentyCellsMoveAsOnTheUndividedLatticeBitForBit
   expect_undivided_run(contact::ContactLaw::vertex);
 }
 
-// The surface law, whose nearest-point search each process does for the cells it owns.
+// The surface law, whose nearest-point search each process does for the cells it computes
+// (CoupledSimulation::computes_cell).
 TEST(ProcessesCoupledSimulation, TwentyCellsInSurfaceContactMoveAsOnTheUndividedLatticeBitForBit) {
   expect_undivided_run(contact::ContactLaw::surface);
 }
 
-// The physiological preset's membrane and cytoplasm: each cell's friction solved by its owner
-// from the moments of nodes on several processes, the classes located on every process.
+// The physiological preset's membrane and cytoplasm: each cell's friction solved by the process
+// that computes it, from the moments of nodes on several processes; the classes located on every
+// process.
 TEST(ProcessesCoupledSimulation, TwentyViscousCellsInAViscousCytoplasmMoveAsOnTheUndividedLattice) {
   expect_undivided_run(contact::ContactLaw::vertex, Membrane::viscous_in_viscous_cytoplasm);
 }
