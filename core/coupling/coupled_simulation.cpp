@@ -307,6 +307,32 @@ void CoupledSimulation::compute_cell_forces() {
   });
 }
 
+template <class Append, class Adopt>
+void CoupledSimulation::share_computed_cells(std::span<const std::size_t> computed,
+                                             std::size_t expected, const char* what,
+                                             const Append& append, const Adopt& adopt) {
+  std::vector<double> mine;
+  for (const std::size_t k : computed) {
+    mine.push_back(static_cast<double>(k));
+    append(k, mine);
+  }
+  const std::vector<double> all = parameters_.processes.gather_to_all(mine);
+  std::span<const double> rest(all);
+  std::size_t adopted = 0;
+  while (!rest.empty()) {
+    const auto k = static_cast<std::size_t>(rest.front());
+    if (k >= cells_.size())
+      throw std::logic_error("CoupledSimulation: a copy of no cell came back");
+    rest = adopt(k, rest.subspan(1));
+    ++adopted;
+  }
+  if (adopted != expected) {
+    throw std::logic_error("CoupledSimulation: the " + std::string(what) + " of " +
+                           std::to_string(adopted) + " of " + std::to_string(expected) +
+                           " cells came back");
+  }
+}
+
 bool CoupledSimulation::owns_cell(std::size_t index) const {
   if (!distributed_) return true;
   const int nz = distributed_->global_grid().nz();
@@ -358,23 +384,12 @@ bool CoupledSimulation::compute_owned_cell_forces() {
   }
   const parallel::Communicator& processes = parameters_.processes;
   if (processes.any(failed)) return false;
-  std::vector<double> mine;
-  for (const std::size_t k : owned) {
-    mine.push_back(static_cast<double>(k));
-    cells_[k].append_forces(mine);
-  }
-  const std::vector<double> all = processes.gather_to_all(mine);
-  std::span<const double> rest(all);
-  std::size_t adopted = 0;
-  while (!rest.empty()) {
-    const auto k = static_cast<std::size_t>(rest.front());
-    rest = cells_.at(k).adopt_forces(rest.subspan(1), frame_);
-    ++adopted;
-  }
-  if (adopted != cells_.size()) {
-    throw std::logic_error("CoupledSimulation: the forces of " + std::to_string(adopted) + " of " +
-                           std::to_string(cells_.size()) + " cells came back");
-  }
+  share_computed_cells(
+      owned, cells_.size(), "forces",
+      [this](std::size_t k, std::vector<double>& values) { cells_[k].append_forces(values); },
+      [this](std::size_t k, std::span<const double> values) {
+        return cells_[k].adopt_forces(values, frame_);
+      });
   return true;
 }
 
@@ -501,23 +516,15 @@ void CoupledSimulation::apply_distributed_membrane_friction() {
     record(copies, run_on_cells(copies, solve));
     fail_on_first(failures);
   }
-  std::vector<double> own_solutions;
-  for (const std::size_t k : owned) {
-    own_solutions.push_back(static_cast<double>(k));
-    cells_[k].append_friction_solution(own_solutions);
-  }
-  const std::vector<double> solutions = processes.gather_to_all(own_solutions);
-  std::span<const double> rest(solutions);
-  std::size_t adopted = 0;
-  while (!rest.empty()) {  // the solving process adopts its own solve too: the same values
-    const auto k = static_cast<std::size_t>(rest.front());
-    rest = cells_.at(k).adopt_friction_solution(rest.subspan(1), step);
-    ++adopted;
-  }
-  if (adopted != with_friction.size()) {
-    throw std::logic_error("CoupledSimulation: the friction of " + std::to_string(adopted) +
-                           " of " + std::to_string(with_friction.size()) + " cells came back");
-  }
+  // The solving process adopts its own solve too: the same values.
+  share_computed_cells(
+      owned, with_friction.size(), "friction",
+      [this](std::size_t k, std::vector<double>& values) {
+        cells_[k].append_friction_solution(values);
+      },
+      [this, step](std::size_t k, std::span<const double> values) {
+        return cells_[k].adopt_friction_solution(values, step);
+      });
   for (const std::size_t k : with_friction) {
     distributed_->add_momentum_on_own_nodes(nodes[k], cells_[k].membrane_friction_momentum());
   }

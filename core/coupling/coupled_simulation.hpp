@@ -263,6 +263,14 @@ class CoupledSimulation {
   // and takes the others' as copies (cell.hpp, adopt_forces). False, having adopted nothing, if a
   // cell failed on any process.
   bool compute_owned_cell_forces();
+  // Collective: each process appends, for every cell of `computed` (the cells it computed), the
+  // cell's index and append(k, values); every process then hands each cell's values to
+  // adopt(k, values), which returns what follows, so that every copy of a cell holds what its
+  // process computed. Throws std::logic_error unless `expected` cells came back (`what` names
+  // the values).
+  template <class Append, class Adopt>
+  void share_computed_cells(std::span<const std::size_t> computed, std::size_t expected,
+                            const char* what, const Append& append, const Adopt& adopt);
   void add_contact_forces();
   void build_contact_surfaces();
   void advance_fluid();

@@ -94,9 +94,11 @@ DistributedFluid::DistributedFluid(Communicator communicator, const lattice::Flu
                        solid_nodes_of(whole),
                        curved_walls_of(whole) ? HaloScheme::full_state : HaloScheme::automatic) {
   // The constructor made every solid node a resting wall; the moving ones and the outlets, with
-  // their velocities and densities, as the undivided solver has them.
+  // their velocities and densities, as the undivided solver has them, and the wall links the
+  // undivided solver cuts other than half-way (links never set are half-way there and here).
   const lattice::BoundaryMap& boundaries = whole.boundaries();
   const lattice::LatticeGrid& grid = local_.grid();
+  std::vector<lattice::WallLink> links;
   for (int z = 0; z < grid.nz(); ++z) {
     const int global_z = lattice::LatticeGrid::wrap(z_begin() - kHaloPlanes + z, global_.nz());
     for (int y = 0; y < grid.ny(); ++y) {
@@ -108,11 +110,16 @@ DistributedFluid::DistributedFluid(Communicator communicator, const lattice::Flu
         } else if (boundaries.kind(node) == lattice::NodeKind::wall) {
           const auto velocity = boundaries.wall_velocity(node);
           if (velocity != std::array<double, 3>{0.0, 0.0, 0.0}) local_.set_wall(here, velocity);
+        } else if (boundaries.has_wall_fractions()) {
+          for (int i = 1; i < lattice::kDirections; ++i) {
+            const double fraction = boundaries.wall_fraction(node, i);
+            if (fraction != lattice::kHalfwayFraction) links.push_back({here, i, fraction});
+          }
         }
       }
     }
   }
-  if (boundaries.has_wall_fractions()) copy_wall_links(whole);
+  if (!links.empty()) local_.set_wall_links(links);
   StateArchive state("the undivided fluid");
   whole.save_state(state);
   restore_state(state);
@@ -195,30 +202,6 @@ void DistributedFluid::initialise_equilibrium(
   local_.initialise_equilibrium(density, velocity);
 }
 
-void DistributedFluid::copy_wall_links(const lattice::FluidSolver& whole) {
-  // Every link of the slab and its ghost planes whose fraction the undivided solver holds other
-  // than half-way (links never set are half-way there and here alike).
-  const lattice::BoundaryMap& boundaries = whole.boundaries();
-  const lattice::LatticeGrid& grid = local_.grid();
-  std::vector<lattice::WallLink> links;
-  for (int z = 0; z < grid.nz(); ++z) {
-    const int global_z = lattice::LatticeGrid::wrap(z_begin() - kHaloPlanes + z, global_.nz());
-    for (int y = 0; y < grid.ny(); ++y) {
-      for (int x = 0; x < grid.nx(); ++x) {
-        const std::size_t node = global_.index(x, y, global_z);
-        if (!boundaries.is_fluid(node)) continue;
-        for (int i = 1; i < lattice::kDirections; ++i) {
-          const double fraction = boundaries.wall_fraction(node, i);
-          if (fraction != lattice::kHalfwayFraction) {
-            links.push_back({grid.index(x, y, z), i, fraction});
-          }
-        }
-      }
-    }
-  }
-  local_.set_wall_links(links);
-}
-
 std::int64_t DistributedFluid::own_local_index(std::size_t global_node) const {
   const std::size_t plane_size = static_cast<std::size_t>(global_.nx()) * global_.ny();
   const auto z = static_cast<int>(global_node / plane_size);
@@ -228,22 +211,27 @@ std::int64_t DistributedFluid::own_local_index(std::size_t global_node) const {
                                        plane_size);
 }
 
-void DistributedFluid::append_own_pre_collision_moments(std::span<const std::size_t> global_nodes,
-                                                        double label,
-                                                        std::vector<double>& values) const {
-  std::vector<std::size_t> positions;
-  std::vector<std::size_t> local_nodes;
+DistributedFluid::OwnNodes DistributedFluid::own_nodes(
+    std::span<const std::size_t> global_nodes) const {
+  OwnNodes own;
   for (std::size_t k = 0; k < global_nodes.size(); ++k) {
     const std::int64_t local = own_local_index(global_nodes[k]);
     if (local < 0) continue;
-    positions.push_back(k);
-    local_nodes.push_back(static_cast<std::size_t>(local));
+    own.positions.push_back(k);
+    own.local_nodes.push_back(static_cast<std::size_t>(local));
   }
-  std::vector<double> density(local_nodes.size());
-  std::vector<Vec3> momentum(local_nodes.size());
-  local_.pre_collision_moments(local_nodes, density, momentum);
-  for (std::size_t k = 0; k < local_nodes.size(); ++k) {
-    values.insert(values.end(), {label, static_cast<double>(positions[k]), density[k],
+  return own;
+}
+
+void DistributedFluid::append_own_pre_collision_moments(std::span<const std::size_t> global_nodes,
+                                                        double label,
+                                                        std::vector<double>& values) const {
+  const OwnNodes own = own_nodes(global_nodes);
+  std::vector<double> density(own.local_nodes.size());
+  std::vector<Vec3> momentum(own.local_nodes.size());
+  local_.pre_collision_moments(own.local_nodes, density, momentum);
+  for (std::size_t k = 0; k < own.local_nodes.size(); ++k) {
+    values.insert(values.end(), {label, static_cast<double>(own.positions[k]), density[k],
                                  momentum[k].x(), momentum[k].y(), momentum[k].z()});
   }
 }
@@ -254,15 +242,11 @@ void DistributedFluid::add_momentum_on_own_nodes(std::span<const std::size_t> gl
     throw std::invalid_argument("parallel: momentum for " + std::to_string(momentum.size()) +
                                 " of " + std::to_string(global_nodes.size()) + " nodes");
   }
-  std::vector<std::size_t> local_nodes;
+  const OwnNodes own = own_nodes(global_nodes);
   std::vector<Vec3> own_momentum;
-  for (std::size_t k = 0; k < global_nodes.size(); ++k) {
-    const std::int64_t local = own_local_index(global_nodes[k]);
-    if (local < 0) continue;
-    local_nodes.push_back(static_cast<std::size_t>(local));
-    own_momentum.push_back(momentum[k]);
-  }
-  local_.add_momentum(local_nodes, own_momentum);
+  own_momentum.reserve(own.positions.size());
+  for (const std::size_t k : own.positions) own_momentum.push_back(momentum[k]);
+  local_.add_momentum(own.local_nodes, own_momentum);
 }
 
 void DistributedFluid::set_viscosity_classes(

@@ -195,9 +195,13 @@ class DistributedFluid {
   // The reverse, ghost planes included (wrapped around the lattice): rank 0's global field cut
   // into every process's local field.
   std::vector<double> scatter_field(std::span<const double> global, int components) const;
-  // The undivided solver's curved wall links (other than half-way) of the slab and its ghost
-  // planes, into the local solver.
-  void copy_wall_links(const lattice::FluidSolver& whole);
+  // The nodes of `global_nodes` in this slab's own planes: their positions in `global_nodes`
+  // (ascending) and their local indices.
+  struct OwnNodes {
+    std::vector<std::size_t> positions;
+    std::vector<std::size_t> local_nodes;
+  };
+  OwnNodes own_nodes(std::span<const std::size_t> global_nodes) const;
   // The populations of `planes` planes from local_z, and their force density when `force`.
   std::vector<double> pack_planes(int local_z, int planes, bool force) const;
   void unpack_planes(int local_z, int planes, const std::vector<double>& values, bool force);
