@@ -7,9 +7,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
-#include <cmath>
+#include <tuple>
 #include <utility>
 
 #include "membrane/vertex_patch.hpp"
@@ -158,6 +159,45 @@ TEST_P(Distribution, SmoothedForceIsContinuousAcrossAFlatEdge) {
   std::vector<Vec3> untouched(without_term.vertex_count(), Vec3(1, 2, 3));
   inactive.smooth(setup.deformed_um, forces, untouched);
   for (const auto& force : untouched) EXPECT_EQ(force, Vec3(1, 2, 3));
+}
+
+// flat_edges screens the edges before it takes their angles: it must still find exactly the edges
+// with |theta_j| < eps, also those a hair inside or outside the window.
+TEST_P(Distribution, FlatEdgesAreExactlyTheEdgesInsideTheWindow) {
+  const auto mesh = rbcsim::cases::testing::evans_fung_discocyte(3);
+  const MembraneModel model(mesh, total_curvature_only(GetParam()));
+  const auto setup = stretched_discocyte(model, mesh);
+  const auto& edges = model.topology().edges();
+  const CurvatureKinks kinks(model);
+  auto workspace = model.make_workspace();
+  auto forces = model.make_forces();
+  constexpr double kWindow_rad = rbcsim::cases::kCurvatureSmoothing_rad;
+  for (const double target_rad :
+       {0.5 * kWindow_rad, kWindow_rad * (1.0 - 1e-9), -kWindow_rad * (1.0 - 1e-9),
+        kWindow_rad * (1.0 + 1e-9), -kWindow_rad * (1.0 + 1e-9), 3.0 * kWindow_rad}) {
+    auto positions = setup.deformed_um;
+    set_angle(positions, edges[setup.edge_index], target_rad);
+    model.compute(positions, workspace, forces);
+    // (vertex0, vertex1, angle) of every edge inside the window, by the exact angle.
+    std::vector<std::tuple<std::int32_t, std::int32_t, double>> expected;
+    for (const auto& edge : edges) {
+      const double angle_rad = rbcsim::mesh::signed_dihedral_angle_rad(positions, edge);
+      if (std::abs(angle_rad) < kWindow_rad) {
+        expected.emplace_back(edge.vertex0, edge.vertex1, angle_rad);
+      }
+    }
+    std::vector<std::tuple<std::int32_t, std::int32_t, double>> found;
+    for (const auto& kink : kinks.flat_edges(positions, forces)) {
+      found.emplace_back(kink.vertices[0], kink.vertices[1], kink.angle_rad);
+    }
+    EXPECT_EQ(found, expected) << "target " << target_rad << " rad";
+    // The edge set near the window's edge is where a screen too narrow would lose it.
+    const auto& target = edges[setup.edge_index];
+    const bool target_found = std::ranges::any_of(found, [&](const auto& entry) {
+      return std::get<0>(entry) == target.vertex0 && std::get<1>(entry) == target.vertex1;
+    });
+    EXPECT_EQ(target_found, std::abs(target_rad) < kWindow_rad) << "target " << target_rad;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Both, Distribution, ::testing::Values("gradient", "paper"));
