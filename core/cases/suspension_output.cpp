@@ -87,6 +87,7 @@ nlohmann::ordered_json suspension_result_section(std::span<const std::string> mo
     counts[morphology_names[m]] = counts[morphology_names[m]].get<int>() + 1;
   }
   const auto& a = run.averages;
+  const double travel_um = mean_cell_travel_um(run.cell_samples);
   std::size_t capped = 0;
   for (const std::size_t steps : run.force_capped_steps) capped += steps;
   return {
@@ -122,6 +123,8 @@ nlohmann::ordered_json suspension_result_section(std::span<const std::string> mo
       {"fluid_settling_steps", run.fluid_settling_steps},
       {"steps", run.steps},
       {"time_s", run.time_s},
+      {"cell_travel_um", travel_um},
+      {"cell_travel_tube_diameters", travel_um / settings.tube_diameter_um},
       {"stop_reason", run.stop_reason},
       {"failure", run.failure},
   };

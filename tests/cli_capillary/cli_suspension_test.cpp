@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/csv_table.hpp"
@@ -86,6 +88,21 @@ TEST(CliSuspension, WritesTheRunDirectoryOfAMixedSuspension) {
   EXPECT_EQ(time_s.front(), 0.0);
   const auto cells = rbcsim::io::read_csv_file(run_dir / "cells_timeseries.csv");
   EXPECT_EQ(cells.numbers("cell_id").size(), 2 * time_s.size());
+  // How far the flow carried the cells: each cell's centroid from its first row to its last
+  // (rows in time order), averaged; downstream, and in tube diameters too.
+  const auto ids = cells.numbers("cell_id");
+  const auto centroid_x = cells.numbers("centroid_x_um");
+  std::map<double, std::pair<double, double>> ends_um;  // cell -> (first x, last x)
+  for (std::size_t row = 0; row < ids.size(); ++row) {
+    if (!ends_um.contains(ids[row])) ends_um[ids[row]].first = centroid_x[row];
+    ends_um[ids[row]].second = centroid_x[row];
+  }
+  double travel_um = 0.0;
+  for (const auto& [id, ends] : ends_um) travel_um += (ends.second - ends.first) / 2.0;
+  EXPECT_GT(travel_um, 0.0);
+  EXPECT_NEAR(suspension["cell_travel_um"].get<double>(), travel_um, 1e-9 * travel_um);
+  EXPECT_NEAR(suspension["cell_travel_tube_diameters"].get<double>(), travel_um / 10.0,
+              1e-9 * travel_um);
   const auto rings = rbcsim::io::read_csv_file(run_dir / "hematocrit_profile.csv");
   EXPECT_EQ(rings.numbers("volume_fraction").size(), 10 * time_s.size());
   const auto pvd = read_text(run_dir / "cells.pvd");
@@ -117,6 +134,11 @@ TEST(CliSuspension, WritesTheRunDirectoryOfAMixedSuspension) {
   EXPECT_EQ(density["discocyte"].size(), 10u);
   EXPECT_EQ(density["stomatocyte-II"].size(), 10u);
   EXPECT_GE(summary["suspension"]["comparisons"].size(), 2u);  // viscosity and H_T / H_D
+  // 0.2 ms of flow has not developed: the numbers are there, the verdict is not.
+  for (const auto& comparison : summary["suspension"]["comparisons"]) {
+    EXPECT_TRUE(comparison["verdict"].get<std::string>().starts_with("not developed"))
+        << comparison["verdict"];
+  }
 }
 
 // Four discocytes of 642 vertices in a 10 um tube: in the Poiseuille flow the cells nearer the

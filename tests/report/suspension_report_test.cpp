@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
+#include <set>
+#include <string>
 
 #include "report/reference_data.hpp"
 #include "report/report.hpp"
@@ -147,6 +150,38 @@ TEST(SuspensionReport, PiercedCellsWithholdTheVerdict) {
   ASSERT_EQ(comparisons.size(), 2u);
   for (const auto& comparison : comparisons) {
     EXPECT_EQ(comparison.at("verdict"), "not a result: cells pierced each other in 16 samples");
+  }
+}
+
+// A flow that has not yet carried its cells 25 tube diameters (the lower end of the 25-50 that a
+// packing needs to develop, Chien et al.) keeps its numbers but gets no verdict; so does a run
+// written before the travel was recorded. At 25 it is compared.
+TEST(SuspensionReport, UndevelopedFlowWithholdsTheVerdict) {
+  rbcsim::testing::ScratchDirectory scratch;
+  auto short_run = suspension_run(20.0, 0.3, 0.35, 1.3, {{"discocyte", 5, 2.0}});
+  short_run.section["cell_travel_um"] = 7.0;
+  short_run.section["cell_travel_tube_diameters"] = 0.35;
+  auto older = suspension_run(10.0, 0.3, 0.35, 1.3, {{"discocyte", 5, 2.0}});
+  older.section.erase("cell_travel_um");
+  older.section.erase("cell_travel_tube_diameters");
+  auto developed = suspension_run(40.0, 0.3, 0.35, 1.3, {{"discocyte", 5, 2.0}});
+  developed.section["cell_travel_tube_diameters"] = 25.0;
+  const auto documents = build_report(read_run_directories(
+      {write_run(scratch.path() / "short", short_run), write_run(scratch.path() / "older", older),
+       write_run(scratch.path() / "developed", developed)}));
+  std::map<std::string, std::set<std::string>> verdicts;  // by tube diameter
+  for (const auto& comparison : documents.summary.at("suspension").at("comparisons")) {
+    const auto what = comparison.at("comparison").get<std::string>();
+    verdicts[what.substr(0, what.find(" um"))].insert(comparison.at("verdict").get<std::string>());
+  }
+  EXPECT_EQ(verdicts.at("suspension D 20"),
+            (std::set<std::string>{"not developed: the cells travelled 0.35 tube diameters of the "
+                                   "25-50 a packing needs (Chien et al.)"}));
+  EXPECT_EQ(
+      verdicts.at("suspension D 10"),
+      (std::set<std::string>{"not a result: how far the flow carried the cells was not recorded"}));
+  for (const auto& verdict : verdicts.at("suspension D 40")) {
+    EXPECT_FALSE(verdict.starts_with("not ")) << verdict;
   }
 }
 
