@@ -19,8 +19,9 @@ const double kScreenTangentSquared = std::pow(std::tan(1.01 * kCurvatureSmoothin
 // Whether an edge may be flatter than the smoothing width, without the atan2 and square root of
 // mesh::signed_dihedral_angle_rad, which the fluid stretch would otherwise pay for every edge at
 // every step. With the same unnormalised normals, |theta| < w needs cos > 0 and
-// (sin |axis|)^2 < tan^2(w) cos^2 |axis|^2 (<= keeps degenerate hinges, whose atan2(0, 0) is 0).
-// False only for edges certainly outside the window.
+// (sin |axis|)^2 < tan^2(w) cos^2 |axis|^2. Written as "not beyond", so that a degenerate hinge
+// (0 against 0; its atan2(0, 0) is 0) and a NaN (which the exact test keeps too) stay
+// candidates: false only for edges certainly outside the window.
 bool may_be_flat(std::span<const Vec3> positions_um, const mesh::Edge& edge) {
   const Vec3& p0 = positions_um[edge.vertex0];
   const Vec3& p1 = positions_um[edge.vertex1];
@@ -30,8 +31,8 @@ bool may_be_flat(std::span<const Vec3> positions_um, const mesh::Edge& edge) {
   const double cosine = normal0.dot(normal1);
   if (cosine < 0.0) return false;
   const double sine_times_axis = normal0.cross(normal1).dot(axis);
-  return sine_times_axis * sine_times_axis <=
-         kScreenTangentSquared * cosine * cosine * axis.squaredNorm();
+  return !(sine_times_axis * sine_times_axis >
+           kScreenTangentSquared * cosine * cosine * axis.squaredNorm());
 }
 
 }  // namespace

@@ -198,6 +198,16 @@ TEST_P(Distribution, FlatEdgesAreExactlyTheEdgesInsideTheWindow) {
     });
     EXPECT_EQ(target_found, std::abs(target_rad) < kWindow_rad) << "target " << target_rad;
   }
+  // A degenerate hinge (wing0 on vertex0, a triangle of no area, its normal exactly zero): its
+  // exact angle is atan2(0, 0) = 0, flat, and the screen must leave it to the exact test.
+  auto positions = setup.deformed_um;
+  const auto& target = edges[setup.edge_index];
+  positions[target.wing0] = positions[target.vertex0];
+  ASSERT_EQ(rbcsim::mesh::signed_dihedral_angle_rad(positions, target), 0.0);
+  const auto flat = kinks.flat_edges(positions, forces);
+  EXPECT_TRUE(std::ranges::any_of(flat, [&](const auto& kink) {
+    return kink.vertices[0] == target.vertex0 && kink.vertices[1] == target.vertex1;
+  }));
 }
 
 INSTANTIATE_TEST_SUITE_P(Both, Distribution, ::testing::Values("gradient", "paper"));
