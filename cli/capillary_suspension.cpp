@@ -67,6 +67,10 @@ void print_summary(const nlohmann::ordered_json& result, const cases::Suspension
       a.discharge_hematocrit, s["tube_to_discharge_hematocrit"].get<double>(),
       a.cell_free_layer_um);
   std::printf(
+      "the flow carried the cells %.3g um on average, %.3g tube diameters (a packing develops "
+      "into blood over 25-50)\n",
+      s["cell_travel_um"].get<double>(), s["cell_travel_tube_diameters"].get<double>());
+  std::printf(
       "%zu steps (%.4g s), steps with a near overlap %zu, with a capped contact push "
       "%zu: %s\n",
       run.steps, run.time_s, run.close_contact_steps, run.capped_contact_steps,

@@ -15,6 +15,7 @@
 #include "common/errors.hpp"
 #include "common/format.hpp"
 #include "common/state_archive.hpp"
+#include "common/track_change.hpp"
 #include "geometry/lattice_grid.hpp"
 #include "geometry/tube_wall.hpp"
 #include "geometry/voxelise.hpp"
@@ -511,37 +512,12 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
 }
 
 double mean_cell_travel_um(std::span<const SuspensionCellSample> samples) {
-  // Per cell, the x of its earliest and latest sample.
-  struct Ends {
-    double first_time_s = 0.0;
-    double first_x_um = 0.0;
-    double last_time_s = 0.0;
-    double last_x_um = 0.0;
-    bool seen = false;
-  };
-  std::vector<Ends> ends;
+  std::vector<TrackSample> along_axis;
+  along_axis.reserve(samples.size());
   for (const auto& sample : samples) {
-    if (sample.cell >= ends.size()) ends.resize(sample.cell + 1);
-    Ends& cell = ends[sample.cell];
-    const double x_um = sample.centroid_um.x();
-    if (!cell.seen || sample.time_s < cell.first_time_s) {
-      cell.first_time_s = sample.time_s;
-      cell.first_x_um = x_um;
-    }
-    if (!cell.seen || sample.time_s >= cell.last_time_s) {
-      cell.last_time_s = sample.time_s;
-      cell.last_x_um = x_um;
-    }
-    cell.seen = true;
+    along_axis.push_back({sample.cell, sample.time_s, sample.centroid_um.x()});
   }
-  double sum_um = 0.0;
-  std::size_t cells = 0;
-  for (const Ends& cell : ends) {
-    if (!cell.seen) continue;
-    sum_um += cell.last_x_um - cell.first_x_um;
-    ++cells;
-  }
-  return cells > 0 ? sum_um / static_cast<double>(cells) : 0.0;
+  return mean_change_per_track(along_axis);
 }
 
 }  // namespace rbcsim::cases

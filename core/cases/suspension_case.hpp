@@ -175,8 +175,8 @@ std::vector<std::size_t> cell_counts_for(double hematocrit, double lumen_volume_
                                          std::span<const double> fractions,
                                          std::span<const double> cell_volumes_um3);
 
-// How far the cells have carried the flow: the mean over the cells of the distance along the
-// axis (x) between a cell's centroid at its first sample and at its last. Centroids travel
+// How far the flow carried the cells: the mean over the cells of the distance along the axis (x)
+// between a cell's centroid at its first sample and at its last. Centroids travel
 // unwrapped along the periodic axis, so a cell that crossed the period counts its whole way.
 // A suspension released from a packing develops (the cells migrate to the axis, the cell-free
 // layer forms) only after the flow has carried it 25-50 tube diameters (Chien, Gompper & Fedosov,

@@ -7,6 +7,12 @@
 // plots up to its stop and left out of everything that needs its averages.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/track_change.hpp"
 
 #include "report/markup.hpp"
 #include "report/reference_data.hpp"
@@ -189,18 +195,39 @@ Comparison against_fit(const std::string& what, double ours, double fit,
           format_significant(100.0 * difference, 3) + " %", pries_verdict(difference)};
 }
 
+// How many tube diameters the flow carried the cells: result.json's figure, or for a run written
+// before it existed the same measure from its cells' centroids in cells_timeseries.csv; nullopt
+// when neither says.
+std::optional<double> travel_tube_diameters(const RunDirectory& run) {
+  if (const auto recorded = run.section().find("cell_travel_tube_diameters")) {
+    return recorded->number();
+  }
+  if (!std::filesystem::exists(run.directory / kCellsFile)) return std::nullopt;
+  const auto table = run.csv(std::string(kCellsFile));
+  for (const char* column : {"time_s", "cell_id", "centroid_x_um"}) {
+    if (!table.has_column(column)) return std::nullopt;
+  }
+  const auto time_s = table.numbers("time_s");
+  const auto cell = table.numbers("cell_id");
+  const auto x_um = table.numbers("centroid_x_um");
+  std::vector<TrackSample> samples;
+  for (std::size_t row = 0; row < time_s.size(); ++row) {
+    samples.push_back({static_cast<std::size_t>(cell[row]), time_s[row], x_um[row]});
+  }
+  return mean_change_per_track(samples) / number_of(run, "tube_diameter_um");
+}
+
 // Why a run's averages get no verdict, or "" when they do: cells that pierced each other, or a
-// flow not yet developed (kDevelopedTravel_diameters; unknown in a run written before
-// cell_travel_tube_diameters existed).
+// flow not yet developed (kDevelopedTravel_diameters).
 std::string withheld_because(const RunDirectory& run) {
   const int pierced = run.section().at("samples_with_pierced_cells").integer();
   if (pierced > 0) {
     return "not a result: cells pierced each other in " + std::to_string(pierced) + " samples";
   }
-  const auto travel = run.section().find("cell_travel_tube_diameters");
+  const auto travel = travel_tube_diameters(run);
   if (!travel) return "not a result: how far the flow carried the cells was not recorded";
-  if (travel->number() < kDevelopedTravel_diameters) {
-    return "not developed: the cells travelled " + format_significant(travel->number(), 2) +
+  if (*travel < kDevelopedTravel_diameters) {
+    return "not developed: the cells travelled " + format_significant(*travel, 2) +
            " tube diameters of the 25-50 a packing needs (Chien et al.)";
   }
   return "";
@@ -318,13 +345,15 @@ Table results_table(const RunList& runs, const std::vector<std::string>& labels)
       "diameter and measured discharge hematocrit",
       {"run", "cells", "packed H_T", "H_T", "H_D", "H_T / H_D", "Pries 1990 H_T / H_D",
        "relative apparent viscosity", "Pries 1992", "rbcsim / Pries 1992", "cell-free layer (um)",
-       "pseudo-shear rate (1/s)", "samples with pierced cells", "force-capped steps"},
+       "pseudo-shear rate (1/s)", "cells' travel (tube diameters)", "samples with pierced cells",
+       "force-capped steps"},
       {}};
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const auto& run = *runs[i];
     const double diameter_um = number_of(run, "tube_diameter_um");
     const double discharge = number_of(run, "discharge_hematocrit");
     const double pries = pries1992_relative_apparent_viscosity(diameter_um, discharge);
+    const auto travel = travel_tube_diameters(run);
     table.rows.push_back(
         {labels[i], std::to_string(run.section().at("cells").integer()),
          row_text(run, "packed_hematocrit", 3), row_text(run, "tube_hematocrit", 3),
@@ -335,6 +364,7 @@ Table results_table(const RunList& runs, const std::vector<std::string>& labels)
          format_significant(pries),
          format_significant(number_of(run, "relative_apparent_viscosity") / pries, 3),
          row_text(run, "cell_free_layer_um", 3), row_text(run, "pseudo_shear_rate_per_s", 3),
+         travel ? format_significant(*travel, 3) : "-",
          std::to_string(run.section().at("samples_with_pierced_cells").integer()),
          std::to_string(run.section().at("force_capped_steps").integer())});
   }

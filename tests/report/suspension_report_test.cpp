@@ -154,8 +154,9 @@ TEST(SuspensionReport, PiercedCellsWithholdTheVerdict) {
 }
 
 // A flow that has not yet carried its cells 25 tube diameters (the lower end of the 25-50 that a
-// packing needs to develop, Chien et al.) keeps its numbers but gets no verdict; so does a run
-// written before the travel was recorded. At 25 it is compared.
+// packing needs to develop, Chien et al.) keeps its numbers but gets no verdict; a run written
+// before the travel was recorded gets it from its cells' centroids, or no verdict without them.
+// At 25 it is compared.
 TEST(SuspensionReport, UndevelopedFlowWithholdsTheVerdict) {
   rbcsim::testing::ScratchDirectory scratch;
   auto short_run = suspension_run(20.0, 0.3, 0.35, 1.3, {{"discocyte", 5, 2.0}});
@@ -164,10 +165,20 @@ TEST(SuspensionReport, UndevelopedFlowWithholdsTheVerdict) {
   auto older = suspension_run(10.0, 0.3, 0.35, 1.3, {{"discocyte", 5, 2.0}});
   older.section.erase("cell_travel_um");
   older.section.erase("cell_travel_tube_diameters");
+  // An older run whose cells' time series has their centroids: the travel comes from there,
+  // 20 and 40 um in a 30 um tube, one diameter.
+  auto older_with_centroids = suspension_run(30.0, 0.3, 0.35, 1.3, {{"discocyte", 2, 2.0}});
+  older_with_centroids.section.erase("cell_travel_um");
+  older_with_centroids.section.erase("cell_travel_tube_diameters");
+  older_with_centroids.files["cells_timeseries.csv"] =
+      "time_s,cell_id,morphology_index,radial_position_um,centroid_x_um\n"
+      "0,0,0,2,1\n0,1,0,2,5\n0.001,0,0,2,21\n0.001,1,0,2,45\n";
   auto developed = suspension_run(40.0, 0.3, 0.35, 1.3, {{"discocyte", 5, 2.0}});
+  developed.section["cell_travel_um"] = 25.0 * 40.0;
   developed.section["cell_travel_tube_diameters"] = 25.0;
   const auto documents = build_report(read_run_directories(
       {write_run(scratch.path() / "short", short_run), write_run(scratch.path() / "older", older),
+       write_run(scratch.path() / "centroids", older_with_centroids),
        write_run(scratch.path() / "developed", developed)}));
   std::map<std::string, std::set<std::string>> verdicts;  // by tube diameter
   for (const auto& comparison : documents.summary.at("suspension").at("comparisons")) {
@@ -180,6 +191,9 @@ TEST(SuspensionReport, UndevelopedFlowWithholdsTheVerdict) {
   EXPECT_EQ(
       verdicts.at("suspension D 10"),
       (std::set<std::string>{"not a result: how far the flow carried the cells was not recorded"}));
+  EXPECT_EQ(verdicts.at("suspension D 30"),
+            (std::set<std::string>{"not developed: the cells travelled 1 tube diameters of the "
+                                   "25-50 a packing needs (Chien et al.)"}));
   for (const auto& verdict : verdicts.at("suspension D 40")) {
     EXPECT_FALSE(verdict.starts_with("not ")) << verdict;
   }
