@@ -16,23 +16,16 @@ namespace {
 // (not the screen's rounding) decides every edge near its edge.
 const double kScreenTangentSquared = std::pow(std::tan(1.01 * kCurvatureSmoothing_rad), 2);
 
-// Whether an edge may be flatter than the smoothing width, without the atan2 and square root of
-// mesh::signed_dihedral_angle_rad, which the fluid stretch would otherwise pay for every edge at
-// every step. With the same unnormalised normals, |theta| < w needs cos > 0 and
-// (sin |axis|)^2 < tan^2(w) cos^2 |axis|^2. Written as "not beyond", so that a degenerate hinge
-// (0 against 0; its atan2(0, 0) is 0) and a NaN (which the exact test keeps too) stay
-// candidates: false only for edges certainly outside the window.
-bool may_be_flat(std::span<const Vec3> positions_um, const mesh::Edge& edge) {
-  const Vec3& p0 = positions_um[edge.vertex0];
-  const Vec3& p1 = positions_um[edge.vertex1];
-  const Vec3 axis = p1 - p0;
-  const Vec3 normal0 = axis.cross(positions_um[edge.wing0] - p0);
-  const Vec3 normal1 = (p0 - p1).cross(positions_um[edge.wing1] - p1);
-  const double cosine = normal0.dot(normal1);
-  if (cosine < 0.0) return false;
-  const double sine_times_axis = normal0.cross(normal1).dot(axis);
-  return !(sine_times_axis * sine_times_axis >
-           kScreenTangentSquared * cosine * cosine * axis.squaredNorm());
+// Whether an edge with these angle parts may be flatter than the smoothing width, without the
+// atan2 and square root of the angle, which the fluid stretch would otherwise pay for every edge
+// at every step. |theta| < w needs cos > 0 and (sin |axis|)^2 < tan^2(w) cos^2 |axis|^2. Written
+// as "not beyond", so that a degenerate hinge (0 against 0; its atan2(0, 0) is 0) and a NaN
+// (which the exact test keeps too) stay candidates: false only for edges certainly outside the
+// window.
+bool may_be_flat(const mesh::HingeAngleParts& parts) {
+  if (parts.cosine < 0.0) return false;
+  return !(parts.sine_times_axis * parts.sine_times_axis >
+           kScreenTangentSquared * parts.cosine * parts.cosine * parts.axis_squared);
 }
 
 }  // namespace
@@ -63,8 +56,9 @@ std::vector<FlatEdge> CurvatureKinks::flat_edges(std::span<const Vec3> positions
   const double push_pN = sign_push_pN(forces);
   const auto distribute = membrane::find_hinge_distribution(parameters.distribution);
   for (const auto& edge : model_.topology().edges()) {
-    if (!may_be_flat(positions_um, edge)) continue;
-    const double angle_rad = mesh::signed_dihedral_angle_rad(positions_um, edge);
+    const auto parts = mesh::hinge_angle_parts(positions_um, edge);
+    if (!may_be_flat(parts)) continue;
+    const double angle_rad = mesh::signed_dihedral_angle_rad(parts);
     if (std::abs(angle_rad) >= kCurvatureSmoothing_rad) continue;
     const auto hinge = membrane::hinge_of(positions_um, edge);
     const double length_um = (hinge.positions_um[1] - hinge.positions_um[0]).norm();

@@ -65,17 +65,23 @@ double edge_length_um(std::span<const Vec3> positions_um, const Edge& edge) {
   return (positions_um[edge.vertex1] - positions_um[edge.vertex0]).norm();
 }
 
-double signed_dihedral_angle_rad(std::span<const Vec3> positions_um, const Edge& edge) {
+HingeAngleParts hinge_angle_parts(std::span<const Vec3> positions_um, const Edge& edge) {
   const Vec3& p0 = positions_um[edge.vertex0];
   const Vec3& p1 = positions_um[edge.vertex1];
   const Vec3 axis = p1 - p0;
   // Outward (unnormalised) normals of triangle0 = (p0, p1, wing0) and triangle1 = (p1, p0, wing1).
   const Vec3 normal0 = axis.cross(positions_um[edge.wing0] - p0);
   const Vec3 normal1 = (p0 - p1).cross(positions_um[edge.wing1] - p1);
+  return {normal0.cross(normal1).dot(axis), normal0.dot(normal1), axis.squaredNorm()};
+}
+
+double signed_dihedral_angle_rad(const HingeAngleParts& parts) {
   // atan2 of (sin, cos) scaled by the same positive factor |n0||n1| (and |axis| for the sine).
-  const double sine = normal0.cross(normal1).dot(axis) / axis.norm();
-  const double cosine = normal0.dot(normal1);
-  return std::atan2(sine, cosine);
+  return std::atan2(parts.sine_times_axis / std::sqrt(parts.axis_squared), parts.cosine);
+}
+
+double signed_dihedral_angle_rad(std::span<const Vec3> positions_um, const Edge& edge) {
+  return signed_dihedral_angle_rad(hinge_angle_parts(positions_um, edge));
 }
 
 CurvatureSums curvature_sums(std::span<const Vec3> positions_um, const MeshTopology& topology) {

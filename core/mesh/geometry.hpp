@@ -43,6 +43,19 @@ double edge_length_um(std::span<const Vec3> positions_um, const Edge& edge);
 // choice does not change any force.
 double signed_dihedral_angle_rad(std::span<const Vec3> positions_um, const Edge& edge);
 
+// The pieces that angle is made of, before its atan2 and square root: with the unnormalised
+// outward normals n0, n1 of the two triangles and the edge's axis a (vertex0 -> vertex1),
+// sine_times_axis = (n0 x n1) . a and cosine = n0 . n1 (both |n0||n1| times the sine and cosine;
+// the sine also |a| times), and axis_squared = |a|^2. For tests on the angle that need no atan2.
+struct HingeAngleParts {
+  double sine_times_axis = 0.0;
+  double cosine = 0.0;
+  double axis_squared = 0.0;
+};
+HingeAngleParts hinge_angle_parts(std::span<const Vec3> positions_um, const Edge& edge);
+// signed_dihedral_angle_rad from its parts, to the same bits.
+double signed_dihedral_angle_rad(const HingeAngleParts& parts);
+
 // Sum over edges of M_j = l_j theta_j / 2 (Eq. 13), i.e. the integrated mean curvature in um.
 // The paper's DeltaA (Eq. 12) is 2 D0 times this and C (Eq. 14) is 2 D0 times the sum of |M_j|;
 // D0 (monolayer thickness) cancels in the relative deviations, so we never need its value.
