@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 
@@ -30,8 +31,7 @@ struct FrictionCase {
 // A 642-vertex sphere of radius 4.5 dx in a periodic 24^3 box whose fluid moves with
 // u = u0 (sin(2 pi y / 24), 0, cos(2 pi x / 24)) (plus `rigid` everywhere): a flow that stretches
 // and shears the membrane.
-FrictionCase make_case(const Vec3& rigid) {
-  const int n = 24;
+FrictionCase make_case(const Vec3& rigid, int level = 3, double radius = 4.5, int n = 24) {
   auto fluid = periodic_fluid(n, n, n);
   const std::size_t nodes = fluid->grid().node_count();
   lattice::VectorField velocity{std::vector<double>(nodes), std::vector<double>(nodes),
@@ -44,7 +44,7 @@ FrictionCase make_case(const Vec3& rigid) {
     velocity[2][node] = rigid.z() + 0.01 * std::cos(two_pi * c[0] / n);
   }
   fluid->initialise_equilibrium(std::vector<double>(nodes, 1.0), velocity);
-  auto sphere = sphere_mesh(3, 4.5, Vec3::Constant(0.5 * (n - 1)));
+  auto sphere = sphere_mesh(level, radius, Vec3::Constant(0.5 * (n - 1)));
   auto topology = mesh::MeshTopology::build(sphere);
   ibm::InterpolationStencil stencil;
   stencil.build(ibm::find_delta_kernel("phi2"), {n, n, n, true, true, true}, sphere.positions_um);
@@ -167,6 +167,85 @@ TEST(ImplicitMembraneFriction, StartsFromThePreviousCorrection) {
   for (std::size_t v = 0; v < first.size(); ++v) {
     EXPECT_LT((again[v] - first[v]).norm(), 1e-12 * largest) << "vertex " << v;
   }
+}
+
+// The backward-Euler step solved directly: (R + S^T K S) u' = R u assembled as a dense matrix over
+// the stencil's nodes and factorised. The iterative solve must give the same membrane velocities
+// S u' and the same momentum R (u' - u), to its tolerance.
+TEST(ImplicitMembraneFriction, MatchesADirectSolveOfTheBackwardEulerStep) {
+  auto c = make_case(Vec3(0.02, -0.01, 0.005), 2, 3.5, 16);
+  const auto friction = membrane::edge_friction_for(340.0, "fedosov");
+  const auto network = membrane::EdgeNetwork::of(c.topology);
+  const double dt = 2.0;
+  std::vector<std::size_t> nodes;
+  for (std::size_t v = 0; v < c.sphere.vertex_count(); ++v) {
+    const auto reached = c.stencil.nodes(v);
+    nodes.insert(nodes.end(), reached.begin(), reached.end());
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  const auto node_count = static_cast<Eigen::Index>(nodes.size());
+  const auto vertex_count = static_cast<Eigen::Index>(c.sphere.vertex_count());
+  std::vector<double> density(nodes.size());
+  std::vector<Vec3> momentum(nodes.size());
+  c.fluid->pre_collision_moments(nodes, density, momentum);
+  // S (3V x 3N) and K (3V x 3V), column by column.
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(3 * vertex_count, 3 * node_count);
+  for (Eigen::Index v = 0; v < vertex_count; ++v) {
+    const auto reached = c.stencil.nodes(static_cast<std::size_t>(v));
+    const auto weights = c.stencil.weights(static_cast<std::size_t>(v));
+    for (std::size_t s = 0; s < reached.size(); ++s) {
+      const auto k = std::lower_bound(nodes.begin(), nodes.end(), reached[s]) - nodes.begin();
+      for (int a = 0; a < 3; ++a) S(3 * v + a, 3 * k + a) += weights[s];
+    }
+  }
+  const auto axes = membrane::edge_axes(c.sphere.positions_um, network);
+  Eigen::MatrixXd K(3 * vertex_count, 3 * vertex_count);
+  std::vector<Vec3> unit(c.sphere.vertex_count()), column(c.sphere.vertex_count());
+  for (Eigen::Index j = 0; j < 3 * vertex_count; ++j) {
+    std::fill(unit.begin(), unit.end(), Vec3::Zero());
+    unit[static_cast<std::size_t>(j / 3)][static_cast<int>(j % 3)] = 1.0;
+    std::fill(column.begin(), column.end(), Vec3::Zero());
+    membrane::add_friction_resistance(axes, unit, network, friction, column);
+    for (Eigen::Index i = 0; i < vertex_count; ++i) {
+      K.block<3, 1>(3 * i, j) = dt * column[static_cast<std::size_t>(i)];
+    }
+  }
+  Eigen::VectorXd rho_u(3 * node_count), R = Eigen::VectorXd::Zero(3 * node_count);
+  for (Eigen::Index k = 0; k < node_count; ++k) {
+    rho_u.segment<3>(3 * k) = momentum[static_cast<std::size_t>(k)];
+    R.segment<3>(3 * k).setConstant(density[static_cast<std::size_t>(k)]);
+  }
+  const Eigen::MatrixXd A = Eigen::MatrixXd(R.asDiagonal()) + S.transpose() * K * S;
+  const Eigen::VectorXd u_new = A.ldlt().solve(rho_u);
+  const Eigen::VectorXd membrane_expected = S * u_new;
+  const Eigen::VectorXd momentum_expected = R.asDiagonal() * u_new - rho_u;
+
+  std::vector<Vec3> membrane_velocities(c.sphere.vertex_count());
+  ImplicitMembraneFriction step;
+  step.solve(c.stencil, c.sphere.positions_um, network, friction, dt, *c.fluid,
+             membrane_velocities);
+  ASSERT_EQ(step.nodes().size(), nodes.size());
+  double worst_velocity = 0.0, worst_momentum = 0.0;
+  for (Eigen::Index v = 0; v < vertex_count; ++v) {
+    worst_velocity = std::max(worst_velocity, (membrane_velocities[static_cast<std::size_t>(v)] -
+                                               Vec3(membrane_expected.segment<3>(3 * v)))
+                                                  .norm());
+  }
+  for (Eigen::Index k = 0; k < node_count; ++k) {
+    worst_momentum = std::max(worst_momentum, (step.momentum()[static_cast<std::size_t>(k)] -
+                                               Vec3(momentum_expected.segment<3>(3 * k)))
+                                                  .norm());
+  }
+  // The solve stops at a residual r = R u - A u' of 1e-6 of the first (the friction at u' = u).
+  // The error e of u' then obeys |e| <= |r| / lambda_min(A) <= |r| / min rho (A >= R), and the
+  // membrane's velocities inherit it (the weights sum to 1). The momentum -S^T K S u' errs by
+  // S^T K S e = -r - R e, at most |r| (1 + max rho / min rho).
+  const Eigen::VectorXd u = rho_u.cwiseQuotient(R);
+  const double residual_bound = 1e-6 * (S.transpose() * (K * (S * u))).norm();
+  EXPECT_LT(worst_velocity, residual_bound / R.minCoeff());
+  EXPECT_LT(worst_momentum, residual_bound * (1.0 + R.maxCoeff() / R.minCoeff()));
+  EXPECT_GT(momentum_expected.cwiseAbs().maxCoeff(), 1e-4);  // the friction did act
 }
 
 }  // namespace
