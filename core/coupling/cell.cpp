@@ -131,15 +131,19 @@ membrane::EdgeFrictionParameters Cell::friction_lu(const LatticeFrame& frame) co
           friction.tangential_pN_s_per_um * per_pN_s_per_um};
 }
 
+ImplicitFrictionSettings Cell::friction_settings() const {
+  return {.relative_tolerance = model_.parameters().viscosity_solve_tolerance};
+}
+
 void Cell::solve_membrane_friction(const lattice::FluidSolver& fluid, const LatticeFrame& frame,
                                    std::size_t time_step) {
   if (!has_membrane_friction() || !fluid.populations_natural()) return;
   // Every step the populations are natural (reference kernel), every second step otherwise
   // (the optimised kernel's AA pattern): each step covers the steps since the previous one.
   const auto dt_steps = static_cast<double>(time_step - last_friction_step_);
-  friction_iterations_ =
-      friction_.solve(stencil_, positions_lu_, membrane::EdgeNetwork::of(model_.topology()),
-                      friction_lu(frame), dt_steps, fluid, membrane_velocities_lu_);
+  friction_iterations_ = friction_.solve(
+      stencil_, positions_lu_, membrane::EdgeNetwork::of(model_.topology()), friction_lu(frame),
+      dt_steps, fluid, membrane_velocities_lu_, friction_settings());
   last_friction_step_ = time_step;
   friction_applied_ = true;
 }
@@ -155,7 +159,7 @@ void Cell::solve_membrane_friction_with(std::span<const double> density,
   const auto dt_steps = static_cast<double>(time_step - last_friction_step_);
   friction_iterations_ = friction_.solve_with_moments(
       positions_lu_, membrane::EdgeNetwork::of(model_.topology()), friction_lu(frame), dt_steps,
-      density, momentum_lu, membrane_velocities_lu_);
+      density, momentum_lu, membrane_velocities_lu_, friction_settings());
   last_friction_step_ = time_step;
   friction_applied_ = true;
 }

@@ -156,6 +156,7 @@ class Cell {
   void advance();
   // The membrane's friction coefficients in lattice force per lattice velocity.
   membrane::EdgeFrictionParameters friction_lu(const LatticeFrame& frame) const;
+  ImplicitFrictionSettings friction_settings() const;
 };
 
 }  // namespace rbcsim::coupling

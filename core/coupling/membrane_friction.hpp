@@ -32,7 +32,8 @@
 namespace rbcsim::coupling {
 
 struct ImplicitFrictionSettings {
-  // Converged when the residual is below this fraction of the first one (that of u' = u).
+  // Converged when the residual is below this fraction of the first one (that of u' = u). Runs
+  // take membrane.viscosity_solve_tolerance instead.
   double relative_tolerance = 1e-6;
   std::size_t max_iterations = 1000;
 };

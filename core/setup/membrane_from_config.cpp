@@ -43,6 +43,7 @@ membrane::MembraneParameters membrane_parameters_from(const config::Config& conf
   parameters.distribution = config.string("membrane.distribution");
   parameters.kernel = config.string("membrane.kernel");
   parameters.viscosity_split = config.string("membrane.viscosity_split");
+  parameters.viscosity_solve_tolerance = config.number("membrane.viscosity_solve_tolerance");
   return parameters;
 }
 

@@ -35,7 +35,8 @@ TEST(MembraneFromConfig, DiscocyteDefaultsAreTableTwoInPiconewtonMicrometres) {
 TEST(MembraneFromConfig, MorphologyAndOverridesReachTheStruct) {
   const auto stomatocyte = rbcsim::setup::membrane_parameters_from(resolve_config(
       {.morphology = "stomatocyte-II",
-       .assignments = {"membrane.forces=link,bend,area,volume", "membrane.distribution=paper"}}));
+       .assignments = {"membrane.forces=link,bend,area,volume", "membrane.distribution=paper",
+                       "membrane.viscosity_solve_tolerance=3e-5"}}));
   // Table 2, stomatocyte II column.
   EXPECT_DOUBLE_EQ(stomatocyte.k_link_kBT, 11.0);
   EXPECT_DOUBLE_EQ(stomatocyte.k_bend_kBT, 80.0);
@@ -43,6 +44,7 @@ TEST(MembraneFromConfig, MorphologyAndOverridesReachTheStruct) {
   EXPECT_DOUBLE_EQ(stomatocyte.k_total_curvature_kBT, 220.0);
   EXPECT_EQ(stomatocyte.forces, (std::vector<std::string>{"link", "bend", "area", "volume"}));
   EXPECT_EQ(stomatocyte.distribution, "paper");
+  EXPECT_DOUBLE_EQ(stomatocyte.viscosity_solve_tolerance, 3e-5);
 }
 
 TEST(CellFromConfig, GeneratesTheMorphologyAtTheConfiguredLevel) {

@@ -90,6 +90,14 @@ void add_limits(OptionTable& table) {
       kMembraneDefaults.viscosity_split,
       "How eta_m = sqrt3 gamma_T + sqrt3 gamma_C / 4 is shared by the edge friction: " +
           membrane::viscosity_splits().described_names() + ".");
+  table
+      .add_number("membrane.viscosity_solve_tolerance", "",
+                  kMembraneDefaults.viscosity_solve_tolerance,
+                  "The implicit step of the viscosity term in a coupled run is converged when its "
+                  "residual is below this fraction of the residual at the fluid's velocities "
+                  "(docs/performance.md: the iterations and the accuracy it buys).")
+      .above(0.0)
+      .below(1.0);
 }
 
 void add_scales_and_variants(OptionTable& table) {
