@@ -28,9 +28,9 @@ struct FrictionCase {
   ibm::InterpolationStencil stencil;
 };
 
-// A 642-vertex sphere of radius 4.5 dx in a periodic 24^3 box whose fluid moves with
-// u = u0 (sin(2 pi y / 24), 0, cos(2 pi x / 24)) (plus `rigid` everywhere): a flow that stretches
-// and shears the membrane.
+// A sphere (by default 642 vertices, radius 4.5 dx) in a periodic n^3 box (24^3) whose fluid
+// moves with u = u0 (sin(2 pi y / n), 0, cos(2 pi x / n)) (plus `rigid` everywhere): a flow that
+// stretches and shears the membrane.
 FrictionCase make_case(const Vec3& rigid, int level = 3, double radius = 4.5, int n = 24) {
   auto fluid = periodic_fluid(n, n, n);
   const std::size_t nodes = fluid->grid().node_count();
