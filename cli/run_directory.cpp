@@ -6,7 +6,9 @@
 #include <array>
 #include <ctime>
 #include <iostream>
+#include <set>
 #include <span>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "common/wall_clock.hpp"
@@ -45,6 +47,66 @@ double interrupted_wall_time_s(const std::filesystem::path& directory) {
   return wall->get<double>();
 }
 
+// A key (dotted) at which the config a run was started with and the config of a command resuming
+// it differ: its value in each, "absent" where it is missing.
+struct ConfigDifference {
+  std::string key;
+  std::string started;
+  std::string now;
+};
+
+std::string shown(const nlohmann::json& value) {
+  constexpr std::size_t kLongest = 60;
+  auto text = value.dump();
+  if (text.size() > kLongest) text = text.substr(0, kLongest) + "...";
+  return text;
+}
+
+// Every key at which the two trees differ, in sorted order.
+void add_differences(const nlohmann::json& started, const nlohmann::json& now,
+                     const std::string& key, std::vector<ConfigDifference>& differences) {
+  if (!started.is_object() || !now.is_object()) {
+    if (started != now) differences.push_back({key, shown(started), shown(now)});
+    return;
+  }
+  std::set<std::string> keys;
+  for (const auto& [name, value] : started.items()) keys.insert(name);
+  for (const auto& [name, value] : now.items()) keys.insert(name);
+  for (const auto& name : keys) {
+    const auto child = key.empty() ? name : key + "." + name;
+    const auto was = started.find(name);
+    const auto is = now.find(name);
+    if (was == started.end() || is == now.end()) {
+      differences.push_back({child, was == started.end() ? "absent" : shown(*was),
+                             is == now.end() ? "absent" : shown(*is)});
+    } else {
+      add_differences(*was, *is, child, differences);
+    }
+  }
+}
+
+// A resume continues the run only with the config it was started with (its checkpoint and
+// finished parts carry that config's fingerprint); this names the first option that differs, so
+// the user need not guess which of the original command's options is missing.
+void require_the_started_config(const std::filesystem::path& directory,
+                                const config::Config& config) {
+  const auto file = directory / "config.json";
+  if (!std::filesystem::exists(file)) return;  // never started: the checkpoint's own check
+  auto started = config::parse_json(io::read_text_file(file), file.string());
+  started.erase("run");      // this command's record, not its config
+  started.erase("derived");  // follows from the rest
+  std::vector<ConfigDifference> differences;
+  add_differences(started, config.json(), "", differences);
+  if (differences.empty()) return;
+  const auto& first = differences.front();
+  std::string message = "the run was started with " + first.key + " = " + first.started +
+                        ", this command gives " + first.now;
+  if (differences.size() > 1) {
+    message += " (and " + std::to_string(differences.size() - 1) + " more keys differ)";
+  }
+  throw InputError(file.string(), message + ": resume with the options it was started with");
+}
+
 int apply_threads(int requested) {
   if (requested > 0) omp_set_num_threads(requested);
   return omp_get_max_threads();
@@ -75,7 +137,10 @@ RunDirectory::RunDirectory(std::string command, const CommonOptions& options,
               ? options.output_directory
               : std::filesystem::path("runs") /
                     (command_ + "-" + morphology_ + "-" + utc_text(now, "%Y%m%dT%H%M%SZ"));
-  if (options.resuming) wall_time_before_resume_s_ = interrupted_wall_time_s(path_);
+  if (options.resuming) {
+    require_the_started_config(path_, config);
+    wall_time_before_resume_s_ = interrupted_wall_time_s(path_);
+  }
 }
 
 double RunDirectory::elapsed_s() const { return seconds_since(started_); }

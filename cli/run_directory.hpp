@@ -34,8 +34,10 @@ std::string mesh_sha256(const mesh::TriangleMesh& mesh);
 class RunDirectory {
  public:
   // Applies --threads (OpenMP) and notes the start time. The directory is --output, or
-  // runs/<command>-<morphology>-<UTC timestamp> below the working directory. With --resume, reads
-  // the wall time of the interrupted run from its result.json (InputError if unreadable).
+  // runs/<command>-<morphology>-<UTC timestamp> below the working directory. With --resume,
+  // refuses a config other than the one in the directory's config.json (InputError naming the
+  // first key that differs) and reads the wall time of the interrupted run from its result.json
+  // (InputError if unreadable).
   RunDirectory(std::string command, const CommonOptions& options, const config::Config& config);
 
   const std::filesystem::path& path() const { return path_; }

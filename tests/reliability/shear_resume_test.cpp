@@ -6,9 +6,11 @@
 // --checkpoint-every and --resume. The coarse sweep of shear_case_test.cpp, one unit of strain.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <thread>
@@ -235,17 +237,46 @@ TEST(ShearResume, ResumedRunCountsTheWallTimeOfTheInterruptedOne) {
   EXPECT_GT(resumed["wall_time_s"].get<double>(), interrupted_s);
 }
 
-TEST(ShearResume, APointOfAnotherConfigIsBadInput) {
-  const ScratchDirectory scratch;
+// One finished rate of the coarse binary settings in <scratch>/run, and the resume of it with
+// shear.gap_diameters changed (before which `prepare` may alter the run directory).
+rbcsim::testing::RunResult resume_with_another_gap(
+    const ScratchDirectory& scratch,
+    const std::function<void(const std::filesystem::path&)>& prepare) {
   const auto run_dir = scratch.path() / "run";
   const std::string settings = std::string(" --rates 0 --max-strain 0.2") + kCoarseBinarySettings;
-  ASSERT_EQ(rbcsim::testing::run_rbcsim("shear --output '" + run_dir.string() + "'" + settings,
+  EXPECT_EQ(rbcsim::testing::run_rbcsim("shear --output '" + run_dir.string() + "'" + settings,
                                         scratch.path())
                 .exit_code,
             0);
-  const auto resumed = rbcsim::testing::run_rbcsim(
+  prepare(run_dir);
+  return rbcsim::testing::run_rbcsim(
       "shear --resume '" + run_dir.string() + "'" + settings + " --set shear.gap_diameters=2.5",
       scratch.path());
+}
+
+// A resume with another option than the run was started with names that option and its two
+// values in one line, and writes nothing.
+TEST(ShearResume, AnotherConfigThanTheRunsIsBadInputNamingTheKey) {
+  const ScratchDirectory scratch;
+  std::string config_json;
+  const auto resumed = resume_with_another_gap(scratch, [&](const std::filesystem::path& run) {
+    config_json = rbcsim::testing::read_text(run / "config.json");
+  });
+  EXPECT_EQ(resumed.exit_code, 2);
+  EXPECT_EQ(std::count(resumed.err.begin(), resumed.err.end(), '\n'), 1) << resumed.err;
+  EXPECT_NE(resumed.err.find("config.json"), std::string::npos) << resumed.err;
+  EXPECT_NE(resumed.err.find("shear.gap_diameters = 2,"), std::string::npos) << resumed.err;
+  EXPECT_NE(resumed.err.find("gives 2.5"), std::string::npos) << resumed.err;
+  EXPECT_EQ(rbcsim::testing::read_text(scratch.path() / "run" / "config.json"), config_json);
+}
+
+// Without the run's config.json to compare with, a finished point's own fingerprint still
+// refuses another config.
+TEST(ShearResume, APointOfAnotherConfigIsBadInput) {
+  const ScratchDirectory scratch;
+  const auto resumed = resume_with_another_gap(scratch, [](const std::filesystem::path& run) {
+    std::filesystem::remove(run / "config.json");
+  });
   EXPECT_EQ(resumed.exit_code, 2);
   EXPECT_NE(resumed.err.find("point.json"), std::string::npos) << resumed.err;
   EXPECT_NE(resumed.err.find("different config"), std::string::npos) << resumed.err;

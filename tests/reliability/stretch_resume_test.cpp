@@ -201,8 +201,9 @@ TEST(StretchResume, SigintWritesTheForcesDoneSoFarAndACheckpoint) {
   EXPECT_TRUE(std::filesystem::exists(run_dir / coupling::kCheckpointFileName));
 }
 
-// A checkpoint of another config is refused with one line naming it, before anything is written.
-TEST(StretchResume, ACheckpointOfAnotherConfigIsBadInput) {
+// A resume with another config is refused with one line naming the run's config.json and the
+// option that differs, before anything is written.
+TEST(StretchResume, AnotherConfigThanTheRunsIsBadInput) {
   const ScratchDirectory scratch;
   const auto run_dir = scratch.path() / "run";
   ASSERT_EQ(rbcsim::testing::run_rbcsim(
@@ -217,8 +218,8 @@ TEST(StretchResume, ACheckpointOfAnotherConfigIsBadInput) {
                                   scratch.path());
   EXPECT_EQ(resumed.exit_code, 2);
   EXPECT_EQ(std::count(resumed.err.begin(), resumed.err.end(), '\n'), 1) << resumed.err;
-  EXPECT_NE(resumed.err.find("checkpoint.bin"), std::string::npos) << resumed.err;
-  EXPECT_NE(resumed.err.find("different config"), std::string::npos) << resumed.err;
+  EXPECT_NE(resumed.err.find("config.json"), std::string::npos) << resumed.err;
+  EXPECT_NE(resumed.err.find("stretch.fluid.box_margin_um"), std::string::npos) << resumed.err;
   EXPECT_EQ(rbcsim::testing::read_text(run_dir / "config.json"), config_json);
 }
 
