@@ -52,12 +52,16 @@ struct ChildOutcome {
   double wall_s = 0.0;
 };
 
-// Runs this binary with `arguments`, stdout and stderr into `log`; waits for it.
-ChildOutcome run_child(const std::vector<std::string>& arguments,
+// Runs this binary with `arguments`, stdout and stderr into `log`, behind `launcher` (e.g.
+// {"/usr/bin/mpiexec", "-n", "2"}; empty: directly); waits for it.
+ChildOutcome run_child(const std::vector<std::string>& launcher,
+                       const std::vector<std::string>& arguments,
                        const std::filesystem::path& log) {
-  const auto executable = std::filesystem::read_symlink("/proc/self/exe");
-  std::vector<std::string> words = {executable.string()};
+  const auto self = std::filesystem::read_symlink("/proc/self/exe");
+  std::vector<std::string> words = launcher;
+  words.push_back(self.string());
   words.insert(words.end(), arguments.begin(), arguments.end());
+  const std::string executable = words.front();
   std::vector<char*> argv;
   for (auto& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
@@ -73,8 +77,7 @@ ChildOutcome run_child(const std::vector<std::string>& arguments,
       posix_spawn(&child, executable.c_str(), &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0) {
-    throw RuntimeFailure("bench: could not start " + executable.string() + ": " +
-                         std::strerror(spawned));
+    throw RuntimeFailure("bench: could not start " + executable + ": " + std::strerror(spawned));
   }
   // Polled, so that an interrupt of the bench alone (kill -INT, not the terminal's Ctrl-C, which
   // reaches both) is passed on and the case writes its results so far.
@@ -97,15 +100,18 @@ ChildOutcome run_child(const std::vector<std::string>& arguments,
 }
 
 // One run of a case: the child's wall time, exit code, and result.json's status and headline.
-Json measure_run(const std::vector<std::string>& arguments, const std::filesystem::path& directory,
+Json measure_run(const std::vector<std::string>& launcher,
+                 const std::vector<std::string>& arguments, const std::filesystem::path& directory,
                  bool progress) {
-  if (progress) std::cerr << "rbcsim bench: paper case: rbcsim";
   if (progress) {
+    std::cerr << "rbcsim bench: paper case:";
+    for (const auto& word : launcher) std::cerr << ' ' << word;
+    std::cerr << " rbcsim";
     for (const auto& word : arguments) std::cerr << ' ' << word;
     std::cerr << std::endl;
   }
   const auto log = directory.string() + ".log";
-  const auto outcome = run_child(arguments, log);
+  const auto outcome = run_child(launcher, arguments, log);
   throw_if_interrupted();
   if (outcome.exit_code == kExitInterrupted || outcome.exit_code == 128 + SIGINT ||
       outcome.exit_code == 128 + SIGTERM) {
@@ -133,10 +139,52 @@ std::string run_name(const std::string& name, int threads, bool before) {
   return name + "-" + std::to_string(threads) + "t" + (before ? "-before" : "");
 }
 
+// The case on request.processes processes of one thread each, against its one-process,
+// one-thread run `one` ("processes" of the case's entry).
+Json measure_on_processes(const PaperCase& paper_case, const PaperCaseRequest& request,
+                          const Json& one) {
+  const auto directory =
+      request.directory / (paper_case.name + "-" + std::to_string(request.processes) + "p");
+  auto arguments = joined(paper_case.arguments, request.forwarded_arguments);
+  arguments = joined(arguments, {"--threads", "1", "--output", directory.string()});
+  const std::vector<std::string> launcher = {request.mpiexec.string(), "-n",
+                                             std::to_string(request.processes)};
+  const Json measured = measure_run(launcher, arguments, directory, request.progress);
+  Json run = {{"processes", request.processes},
+              {"threads_per_process", 1},
+              {"run", measured},
+              {"speedup_over_one_process", nullptr},
+              {"fraction_of_linear", nullptr},
+              {"same_headline_as_one_process", measured["headline"] == one["headline"]}};
+  if (run["run"]["exit_code"] == 0 && one["exit_code"] == 0) {
+    const double speedup = one["seconds"].get<double>() / run["run"]["seconds"].get<double>();
+    run["speedup_over_one_process"] = speedup;
+    run["fraction_of_linear"] = speedup / request.processes;
+  }
+  return run;
+}
+
 std::string seconds_cell(const Json& run) {
   if (run.is_null()) return "-";
   const std::string seconds = fixed(run["seconds"].get<double>(), 1);
   return run["exit_code"] == 0 ? seconds : seconds + " (exit " + run["exit_code"].dump() + ")";
+}
+
+// The rows of the run on several processes, under the thread counts' table.
+void print_processes(const Json& processes) {
+  if (processes.is_null()) return;
+  const auto& run = processes["run"];
+  const std::string label = "  " + processes["processes"].dump() + " processes x 1 thread (s)";
+  if (processes["speedup_over_one_process"].is_null()) {
+    print_row(label, {seconds_cell(run)}, "no ratio: a run did not end with exit 0");
+    return;
+  }
+  const bool same = processes["same_headline_as_one_process"].get<bool>();
+  print_row(label, {seconds_cell(run)},
+            fixed(processes["speedup_over_one_process"].get<double>(), 2) +
+                "x one process of one thread, " +
+                fixed(100.0 * processes["fraction_of_linear"].get<double>(), 0) + " % of linear; " +
+                (same ? "the same headline" : "ANOTHER headline"));
 }
 
 }  // namespace
@@ -212,16 +260,22 @@ Json run_paper_cases(const config::Config& discocyte, const PaperCaseRequest& re
       };
       const auto [now_arguments, now_directory] = settings(false);
       Json run = {{"threads", threads},
-                  {"now", measure_run(now_arguments, now_directory, request.progress)},
+                  {"now", measure_run({}, now_arguments, now_directory, request.progress)},
                   {"before", nullptr},
                   {"speedup", nullptr}};
       if (!paper_case.before_arguments.empty()) {
         const auto [before_arguments, before_directory] = settings(true);
-        run["before"] = measure_run(before_arguments, before_directory, request.progress);
+        run["before"] = measure_run({}, before_arguments, before_directory, request.progress);
         run["speedup"] =
             run["before"]["seconds"].get<double>() / run["now"]["seconds"].get<double>();
       }
       runs.push_back(run);
+    }
+    Json processes = nullptr;
+    if (request.processes > 1) {
+      const auto one = std::find_if(runs.begin(), runs.end(),
+                                    [](const Json& run) { return run["threads"] == 1; });
+      processes = measure_on_processes(paper_case, request, (*one)["now"]);
     }
     std::string before_settings;
     for (const auto& word : paper_case.before_arguments) {
@@ -233,7 +287,8 @@ Json run_paper_cases(const config::Config& discocyte, const PaperCaseRequest& re
                        {"arguments", paper_case.arguments},
                        {"before_settings", before_settings},
                        {"added_arguments", request.forwarded_arguments},
-                       {"runs", runs}});
+                       {"runs", runs},
+                       {"processes", processes}});
   }
   return entries;
 }
@@ -265,6 +320,7 @@ void print_paper_cases(const Json& entries) {
               before_settings.empty() ? "no setting restores it: the gain is in the code"
                                       : "with " + before_settings);
     if (!before_settings.empty()) print_row("  speed-up", speedup);
+    print_processes(entry["processes"]);
   }
 }
 

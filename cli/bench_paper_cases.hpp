@@ -1,6 +1,7 @@
 // `rbcsim bench --paper-cases`: the paper's runs as a user runs them, timed end to end
 // (docs/commands/bench.md). Each case is an rbcsim command with its settings, run as a child
-// process of this binary with --threads 1 and with all threads; where a setting restores how the
+// process of this binary with --threads 1 and with all threads (and, on request, under mpiexec on
+// several processes of one thread); where a setting restores how the
 // case ran before the speed work (time-scale compression off, say), the case also runs with it,
 // side by side, and the ratio of the two is the speed-up on this machine. Without such a setting
 // the speed-up lives in the code and there is nothing to run it against: no ratio is printed.
@@ -42,11 +43,17 @@ struct PaperCaseRequest {
   // Where each run's directory goes (<case>-<threads>t[-before]); kept.
   std::filesystem::path directory;
   bool progress = true;  // one line on stderr per run
+  // Above 1: each case also runs as `mpiexec -n processes rbcsim ...`, one thread per process
+  // (<case>-<processes>p), timed against its one-process, one-thread run.
+  int processes = 1;
+  std::filesystem::path mpiexec;  // the launcher, when processes > 1
 };
 
 // Runs the cases; one JSON entry per case: name, description, figure, the command, and per thread
 // count the wall seconds, exit code, status and headline of result.json, and those of the run as
-// before with the ratio. An interrupt (the child's or ours) throws Interrupted.
+// before with the ratio; with request.processes > 1 also "processes": that run and its speed-up
+// over one process of one thread, and the fraction of linear. An interrupt (the child's or ours)
+// throws Interrupted.
 nlohmann::ordered_json run_paper_cases(const config::Config& discocyte,
                                        const PaperCaseRequest& request);
 

@@ -6,8 +6,11 @@
 // by side on the project machine unless --reference FILE), and ms per step of suspensions of 1 to
 // 100 cells with the share of each phase. Wall-clock measurements: other load lowers them, so the
 // machine's load average is printed with them.
+#include <unistd.h>
+
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <map>
@@ -15,6 +18,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bench_paper_cases.hpp"
@@ -70,6 +74,7 @@ struct BenchOptions {
   std::vector<int> rank_lattice = {128, 128, 128};  // --ranks-lattice
   int block_planes = 8;                             // --block-planes
   int rank_cells = 8;                               // --ranks-cells
+  int paper_case_processes = 1;                     // --paper-cases-processes
 };
 
 // figure / ours for a time, ours / figure for a throughput: > 1 when rbcsim is faster.
@@ -410,9 +415,42 @@ std::vector<std::string> forwarded_config_arguments(const config::ConfigRequest&
   return arguments;
 }
 
-// The paper cases' request, checked before a minute of measurements: names and --output.
+// The first executable file `name` in a directory of PATH, if any.
+std::optional<std::filesystem::path> on_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::string_view rest = path == nullptr ? "" : path;
+  while (!rest.empty()) {
+    const auto end = std::min(rest.find(':'), rest.size());
+    const auto candidate = std::filesystem::path(rest.substr(0, end)) / name;
+    if (access(candidate.c_str(), X_OK) == 0) return candidate;
+    rest.remove_prefix(std::min(end + 1, rest.size()));
+  }
+  return std::nullopt;
+}
+
+// The launcher of --paper-cases-processes: a build with MPI (one without would run N independent
+// copies of each case) and mpiexec on PATH.
+std::filesystem::path paper_case_launcher() {
+  if (!parallel::built_with_mpi()) {
+    throw InputError("--paper-cases-processes",
+                     "this rbcsim was built without MPI (the CMake option RBCSIM_MPI)");
+  }
+  const auto mpiexec = on_path("mpiexec");
+  if (!mpiexec) {
+    throw InputError("--paper-cases-processes", "needs mpiexec on PATH (Debian: openmpi-bin)");
+  }
+  return *mpiexec;
+}
+
+// The paper cases' request, checked before a minute of measurements: names, --output and the
+// launcher of --paper-cases-processes.
 std::optional<PaperCaseRequest> paper_case_request(const BenchOptions& options) {
-  if (options.paper_cases.empty()) return std::nullopt;
+  if (options.paper_cases.empty()) {
+    if (options.paper_case_processes > 1) {
+      throw InputError("--paper-cases-processes", "needs --paper-cases (the cases to run)");
+    }
+    return std::nullopt;
+  }
   PaperCaseRequest request;
   request.names = parse_paper_case_names(options.paper_cases);
   if (options.common.output_directory.empty()) {
@@ -421,21 +459,25 @@ std::optional<PaperCaseRequest> paper_case_request(const BenchOptions& options) 
   request.directory = options.common.output_directory / "paper_cases";
   request.forwarded_arguments = forwarded_config_arguments(options.common.config);
   request.progress = !options.common.quiet;
+  request.processes = options.paper_case_processes;
+  if (request.processes > 1) request.mpiexec = paper_case_launcher();
   return request;
 }
 
 // Runs that did not end with exit 0, for the bench's own failure after everything is written.
 std::vector<std::string> failed_paper_case_runs(const Json& entries) {
   std::vector<std::string> failed;
+  const auto add_if_failed = [&](const Json& measured) {
+    if (measured.is_null() || measured["exit_code"] == 0) return;
+    failed.push_back(measured["directory"].get<std::string>() + " (exit " +
+                     measured["exit_code"].dump() + ")");
+  };
   for (const auto& entry : entries) {
     for (const auto& run : entry["runs"]) {
-      for (const char* which : {"now", "before"}) {
-        const auto& measured = run[which];
-        if (measured.is_null() || measured["exit_code"] == 0) continue;
-        failed.push_back(measured["directory"].get<std::string>() + " (exit " +
-                         measured["exit_code"].dump() + ")");
-      }
+      add_if_failed(run["now"]);
+      add_if_failed(run["before"]);
     }
+    if (!entry["processes"].is_null()) add_if_failed(entry["processes"]["run"]);
   }
   return failed;
 }
@@ -541,6 +583,14 @@ void attach_bench_command(CLI::App& application) {
                    "(capillary, mills, shear: about an hour on 2 cores) or names, comma-separated "
                    "(capillary-fine: hours); needs --output")
       ->type_name("NAMES");
+  command
+      ->add_option("--paper-cases-processes", options->paper_case_processes,
+                   "Also run each paper case as `mpiexec -n N rbcsim ...`, one thread per "
+                   "process, against its one-process, one-thread run (needs a build with MPI "
+                   "and mpiexec on PATH)")
+      ->default_str("1")
+      ->type_name("N")
+      ->check(whole_number_at_least(1));
   command->add_flag("--ranks", options->ranks,
                     "Measure only the lattice distributed over the processes of `mpirun -np N`: "
                     "ms per step against one process in the same run, the halo's share, bytes "

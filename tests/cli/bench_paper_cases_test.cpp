@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -11,6 +12,7 @@
 
 #include "bench_paper_cases.hpp"
 #include "common/errors.hpp"
+#include "parallel/communicator.hpp"
 #include "support/run_rbcsim.hpp"
 #include "support/scratch_directory.hpp"
 
@@ -85,6 +87,30 @@ TEST(CliBench, PaperCasesRefusedBeforeMeasuring) {
   EXPECT_EQ(no_output.err,
             "rbcsim: error: --paper-cases: needs --output DIR (each case's run directory goes "
             "there)\n");
+  const auto no_cases = run_rbcsim("bench --paper-cases-processes 2", scratch.path());
+  EXPECT_EQ(no_cases.exit_code, 2);
+  EXPECT_EQ(no_cases.err,
+            "rbcsim: error: --paper-cases-processes: needs --paper-cases (the cases to run)\n");
+}
+
+// Several processes need MPI in the build and a launcher: without either the bench says which,
+// before it measures or writes anything.
+TEST(CliBench, PaperCasesOnProcessesNeedMpiAndALauncher) {
+  const rbcsim::testing::ScratchDirectory scratch;
+  const std::string path = std::getenv("PATH") == nullptr ? "" : std::getenv("PATH");
+  setenv("PATH", (scratch.path() / "no-launcher-here").c_str(), 1);
+  const auto refused = run_rbcsim("bench --paper-cases shear --paper-cases-processes 2 --output '" +
+                                      (scratch.path() / "out").string() + "'",
+                                  scratch.path());
+  setenv("PATH", path.c_str(), 1);
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_EQ(refused.err,
+            rbcsim::parallel::built_with_mpi()
+                ? "rbcsim: error: --paper-cases-processes: needs mpiexec on PATH (Debian: "
+                  "openmpi-bin)\n"
+                : "rbcsim: error: --paper-cases-processes: this rbcsim was built without MPI (the "
+                  "CMake option RBCSIM_MPI)\n");
+  EXPECT_FALSE(std::filesystem::exists(scratch.path() / "out"));
 }
 
 TEST(ValidateBenchCommand, PaperCasesTimeTheCommandsBesideTheirSettingsOfBefore) {
