@@ -156,8 +156,8 @@ Json measure_on_processes(const PaperCase& paper_case, const PaperCaseRequest& r
               {"speedup_over_one_process", nullptr},
               {"fraction_of_linear", nullptr},
               {"same_headline_as_one_process", measured["headline"] == one["headline"]}};
-  if (run["run"]["exit_code"] == 0 && one["exit_code"] == 0) {
-    const double speedup = one["seconds"].get<double>() / run["run"]["seconds"].get<double>();
+  if (measured["exit_code"] == 0 && one["exit_code"] == 0) {
+    const double speedup = one["seconds"].get<double>() / measured["seconds"].get<double>();
     run["speedup_over_one_process"] = speedup;
     run["fraction_of_linear"] = speedup / request.processes;
   }

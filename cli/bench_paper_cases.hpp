@@ -1,10 +1,10 @@
 // `rbcsim bench --paper-cases`: the paper's runs as a user runs them, timed end to end
 // (docs/commands/bench.md). Each case is an rbcsim command with its settings, run as a child
 // process of this binary with --threads 1 and with all threads (and, on request, under mpiexec on
-// several processes of one thread); where a setting restores how the
-// case ran before the speed work (time-scale compression off, say), the case also runs with it,
-// side by side, and the ratio of the two is the speed-up on this machine. Without such a setting
-// the speed-up lives in the code and there is nothing to run it against: no ratio is printed.
+// several processes of one thread); where a setting restores how the case ran before the speed
+// work (time-scale compression off, say), the case also runs with it, side by side, and the ratio
+// of the two is the speed-up on this machine. Without such a setting the speed-up lives in the
+// code and there is nothing to run it against: no ratio is printed.
 #pragma once
 
 #include <filesystem>

@@ -93,7 +93,7 @@ void require_the_started_config(const std::filesystem::path& directory,
   const auto file = directory / "config.json";
   if (!std::filesystem::exists(file)) return;  // never started: the checkpoint's own check
   auto started = config::parse_json(io::read_text_file(file), file.string());
-  started.erase("run");      // this command's record, not its config
+  started.erase("run");      // the record of the command that wrote it, not config
   started.erase("derived");  // follows from the rest
   std::vector<ConfigDifference> differences;
   add_differences(started, config.json(), "", differences);
