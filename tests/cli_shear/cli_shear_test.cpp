@@ -234,12 +234,18 @@ TEST(CliShear, ResumeOfASuspensionSweepKeepsFinishedRatesAndResumesTheRest) {
   EXPECT_FALSE(fs::exists(run_dir / "rate_000/cells.pvd"));  // not run again
   EXPECT_TRUE(fs::exists(run_dir / "rate_001/point.json"));
 
-  // A finished rate's record of another config is refused, naming it.
-  const auto other = run_rbcsim(
-      settings + "--set suspension.sample_interval_strain=0.25 --resume '" + run_dir.string() + "'",
-      scratch.path());
+  // Another config is refused, naming the option that differs from the run's config.json; and
+  // without config.json, a finished rate's record of another config is refused, naming it.
+  const std::string other_settings =
+      settings + "--set suspension.sample_interval_strain=0.25 --resume '" + run_dir.string() + "'";
+  const auto other = run_rbcsim(other_settings, scratch.path());
   EXPECT_EQ(other.exit_code, 2);
-  EXPECT_NE(other.err.find("rate_000/point.json"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("config.json"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("suspension.sample_interval_strain"), std::string::npos) << other.err;
+  fs::remove(run_dir / "config.json");
+  const auto other_record = run_rbcsim(other_settings, scratch.path());
+  EXPECT_EQ(other_record.exit_code, 2);
+  EXPECT_NE(other_record.err.find("rate_000/point.json"), std::string::npos) << other_record.err;
 }
 
 TEST(CliShear, ABadSuspensionExitsTwoWithOneLineAndNoRunDirectory) {
