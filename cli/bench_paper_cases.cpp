@@ -139,17 +139,28 @@ std::string run_name(const std::string& name, int threads, bool before) {
   return name + "-" + std::to_string(threads) + "t" + (before ? "-before" : "");
 }
 
+// The command line of one run of a case: its settings, those of the run as before the speed work
+// when `before`, the bench's forwarded options (so they win), the thread count and the directory.
+std::vector<std::string> case_arguments(const PaperCase& paper_case,
+                                        const PaperCaseRequest& request, bool before, int threads,
+                                        const std::filesystem::path& directory) {
+  auto arguments = paper_case.arguments;
+  if (before) arguments = joined(arguments, paper_case.before_arguments);
+  arguments = joined(arguments, request.forwarded_arguments);
+  return joined(arguments, {"--threads", std::to_string(threads), "--output", directory.string()});
+}
+
 // The case on request.processes processes of one thread each, against its one-process,
 // one-thread run `one` ("processes" of the case's entry).
 Json measure_on_processes(const PaperCase& paper_case, const PaperCaseRequest& request,
                           const Json& one) {
   const auto directory =
       request.directory / (paper_case.name + "-" + std::to_string(request.processes) + "p");
-  auto arguments = joined(paper_case.arguments, request.forwarded_arguments);
-  arguments = joined(arguments, {"--threads", "1", "--output", directory.string()});
   const std::vector<std::string> launcher = {request.mpiexec.string(), "-n",
                                              std::to_string(request.processes)};
-  const Json measured = measure_run(launcher, arguments, directory, request.progress);
+  const Json measured =
+      measure_run(launcher, case_arguments(paper_case, request, false, 1, directory), directory,
+                  request.progress);
   Json run = {{"processes", request.processes},
               {"threads_per_process", 1},
               {"run", measured},
@@ -249,23 +260,15 @@ Json run_paper_cases(const config::Config& discocyte, const PaperCaseRequest& re
                                            [&](const PaperCase& c) { return c.name == name; });
     Json runs = Json::array();
     for (const int threads : request.thread_counts) {
-      const auto settings = [&](bool before) {
-        auto arguments = paper_case.arguments;
-        if (before) arguments = joined(arguments, paper_case.before_arguments);
-        arguments = joined(arguments, request.forwarded_arguments);
+      const auto measure = [&](bool before) {
         const auto directory = request.directory / run_name(name, threads, before);
-        return std::make_pair(joined(arguments, {"--threads", std::to_string(threads), "--output",
-                                                 directory.string()}),
-                              directory);
+        return measure_run({}, case_arguments(paper_case, request, before, threads, directory),
+                           directory, request.progress);
       };
-      const auto [now_arguments, now_directory] = settings(false);
-      Json run = {{"threads", threads},
-                  {"now", measure_run({}, now_arguments, now_directory, request.progress)},
-                  {"before", nullptr},
-                  {"speedup", nullptr}};
+      Json run = {
+          {"threads", threads}, {"now", measure(false)}, {"before", nullptr}, {"speedup", nullptr}};
       if (!paper_case.before_arguments.empty()) {
-        const auto [before_arguments, before_directory] = settings(true);
-        run["before"] = measure_run({}, before_arguments, before_directory, request.progress);
+        run["before"] = measure(true);
         run["speedup"] =
             run["before"]["seconds"].get<double>() / run["now"]["seconds"].get<double>();
       }
