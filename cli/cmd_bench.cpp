@@ -353,9 +353,10 @@ void print_suspension_rows(const Json& runs, std::size_t index, bool verbose) {
 
 void print_text(const Json& report, bool verbose) {
   const auto& machine = report["machine"];
-  std::printf("rbcsim bench: %s, %d logical CPUs, last-level cache %.0f MiB\n",
+  const double cache_MiB = machine["last_level_cache_bytes"].get<double>() / (1 << 20);
+  std::printf("rbcsim bench: %s, %d logical CPUs, last-level cache %s\n",
               machine["cpu_model"].get<std::string>().c_str(), machine["logical_cpus"].get<int>(),
-              machine["last_level_cache_bytes"].get<double>() / (1 << 20));
+              cache_MiB > 0.0 ? (fixed(cache_MiB, 0) + " MiB").c_str() : "unknown");
   std::printf("OMP_WAIT_POLICY=%s, load average %s (other processes lower every figure)\n\n",
               machine["omp_wait_policy"].get<std::string>().c_str(),
               machine["load_average"].get<std::string>().c_str());

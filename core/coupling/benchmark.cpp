@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include <unistd.h>
+
 #include "common/errors.hpp"
 #include "common/fastest_batch.hpp"
 #include "common/thread_count_scope.hpp"
@@ -57,7 +59,17 @@ std::string read_first_line(const std::filesystem::path& path) {
   return line;
 }
 
-// The largest cache of the highest level listed for CPU 0.
+// The largest cache of the highest level glibc reads from the CPU itself (CPUID), for machines
+// whose /sys lists no caches (seen on a 2-core EPYC VM); 0 if it knows none either.
+std::size_t last_level_cache_bytes_from_libc() {
+  for (const int name : {_SC_LEVEL4_CACHE_SIZE, _SC_LEVEL3_CACHE_SIZE, _SC_LEVEL2_CACHE_SIZE}) {
+    const long size = sysconf(name);
+    if (size > 0) return static_cast<std::size_t>(size);
+  }
+  return 0;
+}
+
+// The largest cache of the highest level listed for CPU 0 in /sys, else what glibc reads.
 std::size_t last_level_cache_bytes() {
   int best_level = 0;
   std::size_t best_size = 0;
@@ -74,7 +86,7 @@ std::size_t last_level_cache_bytes() {
       best_size = size;
     }
   }
-  return best_size;
+  return best_size > 0 ? best_size : last_level_cache_bytes_from_libc();
 }
 
 std::unique_ptr<lattice::FluidSolver> shear_wave_fluid(const std::array<int, 3>& extent,

@@ -22,7 +22,7 @@ struct MachineDescription {
   int openmp_max_threads = 0;
   std::string omp_wait_policy;             // the environment's OMP_WAIT_POLICY, "unset" if absent
   std::string load_average;                // /proc/loadavg: 1, 5 and 15 minutes; "" if absent
-  std::size_t last_level_cache_bytes = 0;  // from /sys (0 if unknown)
+  std::size_t last_level_cache_bytes = 0;  // from /sys, else glibc (0 if unknown)
 };
 
 MachineDescription describe_machine();
