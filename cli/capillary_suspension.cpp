@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@
 #include "cases/suspension_output.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/wall_clock.hpp"
 #include "coupling/snapshot.hpp"
 #include "io/csv_table.hpp"
 #include "mesh/geometry.hpp"
@@ -144,15 +146,26 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
       config::make_unit_converter(simulated)};
   const auto intervals = setup::snapshot_intervals_from(simulated, physics.units, directory.path());
   const Progress progress(common);
+  const double duration_s = config.number("suspension.duration_s");
+  // Where the coupled run was (physical time, wall time) when progress first looked: the rate
+  // since then, not the set-up's, estimates the wall time left.
+  std::optional<ProgressPoint> first_seen;
   bool started = false;
   auto run = cases::run_suspension(
       morphologies, cells, physics, settings, [&](coupling::CoupledSimulation& simulation) {
         coupling::add_snapshot_output(simulation, directory.path(), intervals, kinds);
         simulation.add_observer(
             {"progress", kProgressIntervalSteps, [&](const coupling::CoupledSimulation& s) {
+               const double time_s = s.time_s() * compression.factor;
+               const double wall_s = directory.elapsed_s();
+               if (!first_seen) first_seen = ProgressPoint{time_s, wall_s};
+               const auto left_s = wall_time_left_s(*first_seen, {time_s, wall_s}, duration_s);
+               const std::string left =
+                   left_s ? ", about " + format_number(std::round(*left_s)) + " s left" : "";
                progress.update("suspension: step " + std::to_string(s.time_step()) +
-                               ", t = " + format_number(s.time_s() * compression.factor) + " s, " +
-                               format_number(std::round(directory.elapsed_s())) + " s");
+                               ", t = " + format_significant(time_s) + " of " +
+                               format_significant(duration_s) + " s, " +
+                               format_number(std::round(wall_s)) + " s" + left);
              }});
         // After the output observers (a resume restores their state), before the directory is
         // started (a refused checkpoint leaves no file behind).
