@@ -159,13 +159,11 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
                const double time_s = s.time_s() * compression.factor;
                const double wall_s = directory.elapsed_s();
                if (!first_seen) first_seen = ProgressPoint{time_s, wall_s};
-               const auto left_s = wall_time_left_s(*first_seen, {time_s, wall_s}, duration_s);
-               const std::string left =
-                   left_s ? ", about " + format_number(std::round(*left_s)) + " s left" : "";
                progress.update("suspension: step " + std::to_string(s.time_step()) +
                                ", t = " + format_significant(time_s) + " of " +
                                format_significant(duration_s) + " s, " +
-                               format_number(std::round(wall_s)) + " s" + left);
+                               format_number(std::round(wall_s)) + " s" +
+                               wall_time_left_text(*first_seen, {time_s, wall_s}, duration_s));
              }});
         // After the output observers (a resume restores their state), before the directory is
         // started (a refused checkpoint leaves no file behind).

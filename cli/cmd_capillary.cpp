@@ -141,8 +141,8 @@ void add_progress(coupling::CoupledSimulation& simulation, const Progress& progr
       {"progress", kProgressIntervalSteps,
        [&progress, &directory, time_scale](const coupling::CoupledSimulation& s) {
          const double centroid_x_um = s.frame().to_um(s.cell(0).centroid_lu()).x();
-         progress.update("capillary: step " + std::to_string(s.time_step()) +
-                         ", t = " + format_number(s.time_s() * time_scale) + " s, centroid x = " +
+         progress.update("capillary: step " + std::to_string(s.time_step()) + ", t = " +
+                         format_significant(s.time_s() * time_scale) + " s, centroid x = " +
                          format_number(std::round(centroid_x_um * 100.0) / 100.0) + " um, " +
                          format_number(std::round(directory.elapsed_s())) + " s");
        }});

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cmath>
 #include <ctime>
 #include <iostream>
 #include <set>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "common/errors.hpp"
+#include "common/format.hpp"
 #include "common/wall_clock.hpp"
 #include "common_options.hpp"
 #include "config/config_sources.hpp"
@@ -252,6 +254,11 @@ std::string summary_heading(const std::string& command, const std::string& varia
     heading.append(" ").append(term.get<std::string>());
   }
   return heading;
+}
+
+std::string wall_time_left_text(ProgressPoint first, ProgressPoint now, double total) {
+  const auto left_s = wall_time_left_s(first, now, total);
+  return left_s ? ", about " + format_number(std::round(*left_s)) + " s left" : "";
 }
 
 Progress::Progress(const CommonOptions& options)

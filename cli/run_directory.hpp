@@ -97,6 +97,9 @@ std::optional<nlohmann::json> read_finished_record(const std::filesystem::path& 
 std::string summary_heading(const std::string& command, const std::string& variant,
                             const nlohmann::ordered_json& result);
 
+// ", about N s left" for a progress line (wall_time_left_s), or "" before the run has moved.
+std::string wall_time_left_text(ProgressPoint first, ProgressPoint now, double total);
+
 // Progress on stderr (docs/architecture.md: results go to files and stdout, so pipelines
 // never see progress). On a terminal, unless --quiet: one line, overwritten. Otherwise only with
 // --verbose, for runs of hours logged to a file: whole lines, the first at once and then at most

@@ -14,6 +14,7 @@
 #include "cases/sheared_suspension.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
+#include "common/wall_clock.hpp"
 #include "coupling/snapshot.hpp"
 #include "io/csv_table.hpp"
 #include "io/pvd_collection.hpp"
@@ -312,17 +313,27 @@ void run_sheared_suspension_command(const config::ConfigRequest& request,
                                            setup::coupling_parameters_from(simulated, rate_path),
                                            config::make_unit_converter(simulated)};
     const auto intervals = setup::snapshot_intervals_from(simulated, physics.units, rate_path);
+    // Where this rate's coupled run was when progress first looked (it outlives the set-up
+    // callback below, which only registers the observer): the wall time left is this rate's.
+    std::optional<ProgressPoint> first_seen;
     point.run = cases::run_sheared_suspension(
         morphologies, cells, physics, settings, [&](coupling::CoupledSimulation& simulation) {
           std::filesystem::create_directories(rate_path);
           coupling::add_snapshot_output(simulation, rate_path, intervals, kinds);
           simulation.add_observer(
               {"progress", kShearProgressIntervalSteps, [&](const coupling::CoupledSimulation& s) {
+                 const double strain = s.time_s() * settings.shear_rate_per_s;
+                 const double wall_s = directory.elapsed_s();
+                 if (!first_seen) first_seen = ProgressPoint{strain, wall_s};
+                 const auto left =
+                     wall_time_left_text(*first_seen, {strain, wall_s}, settings.strain);
                  progress.update("shear suspension: rate " + std::to_string(i + 1) + "/" +
                                  std::to_string(rates.size()) + ", step " +
                                  std::to_string(s.time_step()) + ", strain " +
-                                 format_number(s.time_s() * settings.shear_rate_per_s) + ", " +
-                                 format_number(std::round(directory.elapsed_s())) + " s");
+                                 format_significant(strain) + " of " +
+                                 format_significant(settings.strain) + ", " +
+                                 format_number(std::round(wall_s)) + " s" +
+                                 (left.empty() ? "" : left + " at this rate"));
                }});
           // After the output observers (a resume restores their state); with --resume, a rate
           // without a checkpoint had not started and starts afresh.
