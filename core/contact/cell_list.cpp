@@ -7,14 +7,6 @@
 
 namespace rbcsim::contact {
 
-Vec3 PeriodicBox::minimum_image(Vec3 separation_um) const {
-  for (int axis = 0; axis < 3; ++axis) {
-    const double length = length_um[axis];
-    if (length > 0.0) separation_um[axis] -= length * std::round(separation_um[axis] / length);
-  }
-  return separation_um;
-}
-
 void CellList::build(std::span<const Vec3> points_um, double reach_um, const PeriodicBox& box,
                      std::span<const std::uint32_t> groups) {
   if (!(reach_um > 0.0)) throw std::invalid_argument("cell list: the reach must be > 0");

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -21,8 +22,19 @@ namespace rbcsim::contact {
 struct PeriodicBox {
   std::array<double, 3> length_um{0.0, 0.0, 0.0};
 
-  // The separation with each periodic component brought into [-L/2, L/2].
-  Vec3 minimum_image(Vec3 separation_um) const;
+  // The separation with each periodic component brought into [-L/2, L/2]. Inline, and without
+  // the library's round() where the component is already inside (round(q) = 0 exactly for
+  // |q| < 1/2): the contact search takes it for every corner of every triangle it tries.
+  Vec3 minimum_image(Vec3 separation_um) const {
+    for (int axis = 0; axis < 3; ++axis) {
+      const double length = length_um[axis];
+      if (!(length > 0.0)) continue;
+      const double periods = separation_um[axis] / length;
+      if (std::abs(periods) < 0.5) continue;
+      separation_um[axis] -= length * std::round(periods);
+    }
+    return separation_um;
+  }
 };
 
 class CellList {
