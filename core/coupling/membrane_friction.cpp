@@ -2,15 +2,42 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "common/errors.hpp"
 #include "common/format.hpp"
 
 namespace rbcsim::coupling {
+
+namespace {
+
+// `order` := the indices of `keys` sorted by key, equal keys in index order (a least-significant-
+// digit radix sort, 11 bits a pass, as many passes as the largest key needs).
+void stable_sort_by_key(std::span<const std::size_t> keys, std::vector<std::uint32_t>& order,
+                        std::vector<std::uint32_t>& scratch) {
+  constexpr unsigned kDigitBits = 11;
+  constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
+  order.resize(keys.size());
+  scratch.resize(keys.size());
+  for (std::size_t i = 0; i < keys.size(); ++i) order[i] = static_cast<std::uint32_t>(i);
+  const std::size_t largest = keys.empty() ? 0 : *std::max_element(keys.begin(), keys.end());
+  std::array<std::uint32_t, kBuckets + 1> start{};
+  for (unsigned shift = 0; shift < 64 && (largest >> shift) != 0; shift += kDigitBits) {
+    start.fill(0);
+    for (const std::size_t key : keys) ++start[((key >> shift) & (kBuckets - 1)) + 1];
+    for (std::size_t b = 0; b < kBuckets; ++b) start[b + 1] += start[b];
+    for (const std::uint32_t i : order) scratch[start[(keys[i] >> shift) & (kBuckets - 1)]++] = i;
+    order.swap(scratch);
+  }
+}
+
+}  // namespace
 namespace {
 
 double dot(std::span<const Vec3> a, std::span<const Vec3> b) {
@@ -22,41 +49,41 @@ double dot(std::span<const Vec3> a, std::span<const Vec3> b) {
 }  // namespace
 
 void ImplicitMembraneFriction::prepare(const ibm::InterpolationStencil& stencil) {
-  nodes_.clear();
-  for (std::size_t v = 0; v < stencil.point_count(); ++v) {
-    const auto nodes = stencil.nodes(v);
-    nodes_.insert(nodes_.end(), nodes.begin(), nodes.end());
-  }
-  std::sort(nodes_.begin(), nodes_.end());
-  nodes_.erase(std::unique(nodes_.begin(), nodes_.end()), nodes_.end());
-  slot_node_.clear();
   slot_weight_.clear();
   slot_offsets_.assign(1, 0);
+  slot_lattice_node_.clear();
+  slot_vertex_.clear();
   for (std::size_t v = 0; v < stencil.point_count(); ++v) {
-    for (const auto node : stencil.nodes(v)) {
-      slot_node_.push_back(static_cast<std::uint32_t>(
-          std::lower_bound(nodes_.begin(), nodes_.end(), node) - nodes_.begin()));
-    }
+    const auto nodes = stencil.nodes(v);
+    slot_lattice_node_.insert(slot_lattice_node_.end(), nodes.begin(), nodes.end());
+    slot_vertex_.insert(slot_vertex_.end(), nodes.size(), static_cast<std::uint32_t>(v));
     const auto weights = stencil.weights(v);
     slot_weight_.insert(slot_weight_.end(), weights.begin(), weights.end());
-    slot_offsets_.push_back(static_cast<std::uint32_t>(slot_node_.size()));
+    slot_offsets_.push_back(static_cast<std::uint32_t>(slot_lattice_node_.size()));
   }
-  // The same slots by node (counting sort, vertices ascending within a node), so that spreading
-  // is a gather per node that sums in the order a scatter over the vertices would.
-  node_slot_offsets_.assign(nodes_.size() + 1, 0);
-  for (const auto k : slot_node_) ++node_slot_offsets_[k + 1];
-  for (std::size_t k = 0; k < nodes_.size(); ++k)
-    node_slot_offsets_[k + 1] += node_slot_offsets_[k];
-  node_slot_vertex_.resize(slot_node_.size());
-  node_slot_weight_.resize(slot_node_.size());
-  std::vector<std::uint32_t> fill(node_slot_offsets_.begin(), node_slot_offsets_.end() - 1);
-  for (std::size_t v = 0; v < stencil.point_count(); ++v) {
-    for (std::size_t s = slot_offsets_[v]; s < slot_offsets_[v + 1]; ++s) {
-      const std::uint32_t at = fill[slot_node_[s]]++;
-      node_slot_vertex_[at] = static_cast<std::uint32_t>(v);
-      node_slot_weight_[at] = slot_weight_[s];
+  // The slots in the order of their lattice node, and within a node in slot order (vertices
+  // ascending, so that spreading is a gather per node that sums in the order a scatter over the
+  // vertices would): a stable radix sort. Sorting the nodes and finding each slot's among them by
+  // bisection took about 8 % of a suspension's step at 2562 vertices.
+  stable_sort_by_key(slot_lattice_node_, slot_order_, sort_scratch_);
+  const std::size_t slot_count = slot_lattice_node_.size();
+  nodes_.clear();
+  slot_node_.resize(slot_count);
+  node_slot_offsets_.assign(1, 0);
+  node_slot_vertex_.resize(slot_count);
+  node_slot_weight_.resize(slot_count);
+  for (std::size_t r = 0; r < slot_count; ++r) {
+    const std::uint32_t slot = slot_order_[r];
+    const std::size_t node = slot_lattice_node_[slot];
+    if (nodes_.empty() || nodes_.back() != node) {
+      if (!nodes_.empty()) node_slot_offsets_.push_back(static_cast<std::uint32_t>(r));
+      nodes_.push_back(node);
     }
+    slot_node_[slot] = static_cast<std::uint32_t>(nodes_.size() - 1);
+    node_slot_vertex_[r] = slot_vertex_[slot];
+    node_slot_weight_[r] = slot_weight_[slot];
   }
+  if (!nodes_.empty()) node_slot_offsets_.push_back(static_cast<std::uint32_t>(slot_count));
 }
 
 std::size_t ImplicitMembraneFriction::apply(const ibm::InterpolationStencil& stencil,

@@ -102,6 +102,12 @@ class ImplicitMembraneFriction {
   std::vector<std::uint32_t> node_slot_offsets_;
   std::vector<std::uint32_t> node_slot_vertex_;
   std::vector<double> node_slot_weight_;
+  // prepare()'s work arrays, kept so that a step does not allocate: per slot its lattice node
+  // and vertex, and the slots in node order.
+  std::vector<std::size_t> slot_lattice_node_;
+  std::vector<std::uint32_t> slot_vertex_;
+  std::vector<std::uint32_t> slot_order_;
+  std::vector<std::uint32_t> sort_scratch_;
   std::vector<Vec3> momentum_;  // per node of nodes_: the latest solve's exchange
   // The latest solve's nodes (sorted) and u' - u at each: the next solve's start.
   std::vector<std::size_t> previous_nodes_;
