@@ -35,6 +35,10 @@ std::vector<ForceTermEntry> built_in_terms() {
        [](const MembraneParameters& p, const ReferenceState& r) -> std::unique_ptr<ForceTerm> {
          return std::make_unique<TotalAreaTerm>(p, r);
        }},
+      {"helfrich",
+       [](const MembraneParameters& p, const ReferenceState&) -> std::unique_ptr<ForceTerm> {
+         return std::make_unique<HelfrichTerm>(p);
+       }},
       {"viscosity",
        [](const MembraneParameters& p, const ReferenceState&) -> std::unique_ptr<ForceTerm> {
          return std::make_unique<ViscosityTerm>(p);

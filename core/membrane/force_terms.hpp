@@ -84,6 +84,21 @@ class ViscosityTerm final : public ForceTerm {
   EdgeFrictionParameters friction_;
 };
 
+// Helfrich bending about the stress-free shape (not in the paper; helfrich_term.cpp): Juelicher's
+// E = 2 kappa sum_v (H_v - H0_v)^2 A_v with kappa = k_bend kBT (Table 2's 50 kBT is 2.05e-19 J,
+// the bending modulus of Evans 1983 and Lim et al. 2002), H0_v the reference shape's mean
+// curvature. The paper's bending (Eq. 7) without its limit tau_bend: a harmonic energy in the
+// curvature, so a fold costs energy but never stops the run. Exact gradient, central; reads no
+// distribution. Vertex-based: no fused twin yet (it runs on the reference kernel).
+class HelfrichTerm final : public ForceTerm {
+ public:
+  explicit HelfrichTerm(const MembraneParameters& parameters);
+  void evaluate(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
+
+ private:
+  double bending_modulus_pN_um_;  // kappa
+};
+
 // Common loop of the three angle-based terms (length L0): per edge, the term's HingeLoad is
 // handed to the chosen distribution, which writes the hinge's four slots.
 class HingeTerm : public LawTerm {

@@ -12,7 +12,9 @@
 #include <cstddef>
 #include <memory>
 #include <span>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "common/vec3.hpp"
 #include "membrane/cell_geometry.hpp"
@@ -66,6 +68,8 @@ std::span<const MembraneKernelEntry> membrane_kernel_table();
 const MembraneKernelEntry& find_membrane_kernel(std::string_view name);
 
 std::unique_ptr<MembraneKernel> make_reference_kernel(const MembraneModel& model);
+// The terms the optimised kernel fuses, in registry order; any other runs on the reference kernel.
+std::vector<std::string> fused_force_term_names();
 std::unique_ptr<MembraneKernel> make_optimised_kernel(const MembraneModel& model);
 
 // The force cap on one vertex's total force (MembraneParameters::vertex_force_cap_pN), shared

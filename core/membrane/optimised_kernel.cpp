@@ -474,6 +474,8 @@ class OptimisedKernel final : public MembraneKernel {
 
 }  // namespace
 
+std::vector<std::string> fused_force_term_names() { return {kTermNames.begin(), kTermNames.end()}; }
+
 std::unique_ptr<MembraneKernel> make_optimised_kernel(const MembraneModel& model) {
   return std::make_unique<OptimisedKernel>(model);
 }

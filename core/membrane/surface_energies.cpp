@@ -78,23 +78,54 @@ void SurfaceMeasures::measure(std::span<const Vec3> positions) {
     triangle_areas_um2[t] = geometry.triangle_area_vectors_um2[t].norm();
     area_um2 += triangle_areas_um2[t];
   }
-  const auto& triangle_offsets = topology->vertex_triangle_offsets();
-  const auto& vertex_triangles = topology->vertex_triangles();
-  const auto& edge_offsets = topology->vertex_edge_offsets();
-  const auto& vertex_edges = topology->vertex_edges();
   for (std::size_t v = 0; v < vertex_areas_um2.size(); ++v) {
-    double area = 0.0;
-    for (auto slot = triangle_offsets[v]; slot < triangle_offsets[v + 1]; ++slot) {
-      area += triangle_areas_um2[static_cast<std::size_t>(vertex_triangles[slot])];
-    }
-    vertex_areas_um2[v] = area / 3.0;
-    double curvature = 0.0;
-    for (auto slot = edge_offsets[v]; slot < edge_offsets[v + 1]; ++slot) {
-      const auto e = static_cast<std::size_t>(vertex_edges[slot]);
-      curvature += geometry.edge_lengths_um[e] * geometry.dihedral_angles_rad[e];
-    }
-    vertex_curvatures_um[v] = curvature / 4.0;
+    vertex_areas_um2[v] = vertex_area_um2(*topology, triangle_areas_um2, v);
+    vertex_curvatures_um[v] = integrated_mean_curvature_um(*topology, geometry.edge_lengths_um,
+                                                           geometry.dihedral_angles_rad, v);
   }
+}
+
+double integrated_mean_curvature_um(const mesh::MeshTopology& topology,
+                                    std::span<const double> edge_lengths_um,
+                                    std::span<const double> dihedral_angles_rad,
+                                    std::size_t vertex) {
+  const auto& offsets = topology.vertex_edge_offsets();
+  const auto& edges = topology.vertex_edges();
+  double curvature_um = 0.0;
+  for (auto slot = offsets[vertex]; slot < offsets[vertex + 1]; ++slot) {
+    const auto e = static_cast<std::size_t>(edges[static_cast<std::size_t>(slot)]);
+    curvature_um += edge_lengths_um[e] * dihedral_angles_rad[e];
+  }
+  return curvature_um / 4.0;
+}
+
+namespace {
+
+// A third of the summed areas of `vertex`'s triangles, area_of(t) giving triangle t's, um^2.
+template <class TriangleArea>
+double third_of_ring_area_um2(const mesh::MeshTopology& topology, std::size_t vertex,
+                              const TriangleArea& area_of) {
+  const auto& offsets = topology.vertex_triangle_offsets();
+  const auto& triangles = topology.vertex_triangles();
+  double area_um2 = 0.0;
+  for (auto slot = offsets[vertex]; slot < offsets[vertex + 1]; ++slot) {
+    area_um2 += area_of(static_cast<std::size_t>(triangles[static_cast<std::size_t>(slot)]));
+  }
+  return area_um2 / 3.0;
+}
+
+}  // namespace
+
+double vertex_area_um2(const mesh::MeshTopology& topology,
+                       std::span<const double> triangle_areas_um2, std::size_t vertex) {
+  return third_of_ring_area_um2(topology, vertex,
+                                [&](std::size_t t) { return triangle_areas_um2[t]; });
+}
+
+double vertex_area_um2(const mesh::MeshTopology& topology,
+                       std::span<const Vec3> triangle_area_vectors_um2, std::size_t vertex) {
+  return third_of_ring_area_um2(topology, vertex,
+                                [&](std::size_t t) { return triangle_area_vectors_um2[t].norm(); });
 }
 
 double HelfrichBending::add(const SurfaceMeasures& measures, std::span<Vec3> gradient_pN) const {

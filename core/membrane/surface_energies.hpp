@@ -45,6 +45,18 @@ struct SurfaceMeasures {
   void measure_area_and_volume(std::span<const Vec3> positions_um);
 };
 
+// Juelicher's per-vertex measures, shared by SurfaceMeasures and the dynamic `helfrich` term:
+// the integrated mean curvature M_v = (1/4) sum over v's edges of l_e theta_e (um) and the vertex
+// area A_v = (1/3) sum of v's triangle areas (um^2), from per-triangle areas or area vectors.
+double integrated_mean_curvature_um(const mesh::MeshTopology& topology,
+                                    std::span<const double> edge_lengths_um,
+                                    std::span<const double> dihedral_angles_rad,
+                                    std::size_t vertex);
+double vertex_area_um2(const mesh::MeshTopology& topology,
+                       std::span<const double> triangle_areas_um2, std::size_t vertex);
+double vertex_area_um2(const mesh::MeshTopology& topology,
+                       std::span<const Vec3> triangle_area_vectors_um2, std::size_t vertex);
+
 // Helfrich bending with zero spontaneous curvature, E = (kappa/2) int (2H)^2 dA, discretised as
 // Juelicher (J. Phys. II France 6:1797, 1996): E = 2 kappa sum_i M_i^2 / A_i. A sphere has
 // E = 8 pi kappa at any size and resolution (exactly in the continuum; tested on icospheres).

@@ -23,4 +23,13 @@ void VertexGather::gather(std::span<const Vec3> slot_values, std::span<Vec3> ver
   });
 }
 
+void VertexGather::add_gathered(std::span<const Vec3> slot_values,
+                                std::span<Vec3> vertex_sums) const {
+  parallel_for(offsets_.size() - 1, [&](std::size_t v) {
+    Vec3 sum = Vec3::Zero();
+    for (auto k = offsets_[v]; k < offsets_[v + 1]; ++k) sum += slot_values[slots_[k]];
+    vertex_sums[v] += sum;
+  });
+}
+
 }  // namespace rbcsim::membrane

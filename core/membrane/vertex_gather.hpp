@@ -21,6 +21,8 @@ class VertexGather {
   std::size_t slot_count() const { return slots_.size(); }
   // vertex_sums[v] = sum of slot_values over v's slots (overwrites; slot_values may be longer).
   void gather(std::span<const Vec3> slot_values, std::span<Vec3> vertex_sums) const;
+  // vertex_sums[v] += the same sum (a term with two kinds of element, e.g. hinges and triangles).
+  void add_gathered(std::span<const Vec3> slot_values, std::span<Vec3> vertex_sums) const;
   // The slots of `vertex` in increasing order, for kernels that compute slot values on the fly.
   std::span<const std::int32_t> slots_of(std::size_t vertex) const {
     return std::span(slots_).subspan(

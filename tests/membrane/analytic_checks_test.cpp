@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -114,6 +115,49 @@ TEST(VolumeTerm, ScaledSpherePointsInwardWithTheLawsMagnitude) {
   // below 0.01 rad at level 4 (a vertex normal, not the force code, sets this bound); a wrong
   // sign would give pi, a wrong stencil tenths of a radian.
   EXPECT_LT(largest_angle_rad, 0.01);
+}
+
+// A sphere of radius R = s R0 whose stress-free shape is the sphere of radius R0: every H_v is
+// H0_v / s and every A_v is s^2 A0_v, so E = 2 kappa sum_v H0_v^2 (1/s - 1)^2 s^2 A0_v =
+// (s - 1)^2 x 2 kappa sum_v H0_v^2 A0_v, and that sum is the continuum's 8 pi kappa (Juelicher's
+// scheme is within 1 % of it at level 4: SurfaceEnergies.HelfrichEnergyOfASphereIsEightPiKappa-
+// AtAnyRadius). The positions enter only through s, so the virial is sum x . F = -s dE/ds =
+// -16 pi kappa s (s - 1): a grown sphere is pulled back in.
+TEST(HelfrichTerm, ScaledSphereFollowsTheContinuumEnergyAndPullsBack) {
+  const auto mesh = shapes::sphere(4, 3.0);
+  auto parameters = only({"helfrich"});
+  parameters.kernel = "reference";
+  const MembraneModel model(mesh, parameters);
+  const double kappa_pN_um = parameters.k_bend_kBT * parameters.thermal_energy_pN_um;
+  const double scale = 1.1;
+  std::vector<Vec3> grown = mesh.positions_um;
+  for (auto& p : grown) p *= scale;
+  const auto forces = shapes::forces_at(model, grown);
+  const auto& term = forces.term("helfrich");
+  const double continuum_pN_um =
+      8.0 * std::numbers::pi * kappa_pN_um * (scale - 1.0) * (scale - 1.0);
+  EXPECT_NEAR(term.energy_pN_um / continuum_pN_um, 1.0, 0.01);
+  double virial_pN_um = 0.0;
+  for (std::size_t v = 0; v < grown.size(); ++v) virial_pN_um += grown[v].dot(term.forces_pN[v]);
+  const double continuum_virial_pN_um =
+      -16.0 * std::numbers::pi * kappa_pN_um * scale * (scale - 1.0);
+  EXPECT_NEAR(virial_pN_um / continuum_virial_pN_um, 1.0, 0.01);
+  // At the stress-free sphere itself: no energy, no force (round-off of H ~ 1e-16 / um).
+  const auto at_rest = shapes::forces_at(model, mesh.positions_um);
+  EXPECT_LT(at_rest.term("helfrich").energy_pN_um, 1e-20);
+}
+
+// The optimised kernel names the kernel option for a term it has not fused.
+TEST(HelfrichTerm, TheOptimisedKernelSendsItToTheReferenceKernel) {
+  auto parameters = only({"link", "helfrich"});
+  parameters.kernel = "optimised";
+  try {
+    const MembraneModel model(shapes::sphere(2, 3.0), parameters);
+    FAIL() << "the optimised kernel accepted an unfused term";
+  } catch (const rbcsim::InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("membrane.kernel"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("helfrich"), std::string::npos) << error.what();
+  }
 }
 
 // Uniform dilation x -> (1 + eps) x of any closed mesh: A = (1 + eps)^2 A0 exactly, so

@@ -29,8 +29,8 @@ using rbcsim::membrane::MembraneModel;
 using rbcsim::membrane::MembraneParameters;
 namespace shapes = rbcsim::membrane_test;
 
-// Bit i: the i-th registered term (the paper's six and total_area).
-const unsigned kAllTerms = (1u << rbcsim::membrane::elastic_force_term_names().size()) - 1u;
+// Bit i: the i-th term the optimised kernel fuses (the paper's six and total_area).
+const unsigned kAllTerms = (1u << rbcsim::membrane::fused_force_term_names().size()) - 1u;
 
 struct EquivalenceShape {
   shapes::NamedShape shape;
@@ -54,7 +54,7 @@ const std::vector<EquivalenceShape>& equivalence_shapes() {
 }
 
 std::vector<std::string> term_subset(unsigned mask) {
-  const auto all = rbcsim::membrane::elastic_force_term_names();
+  const auto all = rbcsim::membrane::fused_force_term_names();
   std::vector<std::string> subset;
   for (std::size_t i = 0; i < all.size(); ++i) {
     if ((mask >> i) & 1u) subset.push_back(all[i]);

@@ -32,11 +32,14 @@ bool is_angle_term(const std::string& term) {
   return term == "bend" || term == "area_difference" || term == "total_curvature";
 }
 
-// One term alone, Table 2 discocyte parameters, no force cap (the properties are of the raw term).
+// One term alone, Table 2 discocyte parameters, no force cap (the properties are of the raw term),
+// on the reference kernel: the terms' own definitions (the optimised twin is held to them by
+// kernel_equivalence_test.cpp) and every registered term, fused or not.
 MembraneParameters single_term(const std::string& term, const std::string& distribution) {
   MembraneParameters parameters;
   parameters.forces = {term};
   parameters.distribution = distribution;
+  parameters.kernel = "reference";
   parameters.vertex_force_cap_pN = INFINITY;
   return parameters;
 }
@@ -68,6 +71,8 @@ double law_force_pN(const std::string& term, const MembraneParameters& p, double
   // The harmonic whole-area term: K |d| times a corner's |dA/dx|, about half an edge (L0).
   if (term == "total_area")
     return p.total_area_modulus_uN_per_m * std::abs(d) * p.force_length_scale_um;
+  // Helfrich, d = |H - H0| (1/um): dE/dM = 4 kappa d, and |dM/dx| is of order one.
+  if (term == "helfrich") return 4.0 * p.k_bend_kBT * p.thermal_energy_pN_um * std::abs(d);
   struct Law {
     double k_kBT;
     double length_um;

@@ -113,7 +113,10 @@ void add_scales_and_variants(OptionTable& table) {
   table.add_choice_list("membrane.forces", membrane::all_force_term_names(),
                         kMembraneDefaults.forces,
                         "Force terms switched on: the paper's six by default; total_area adds the "
-                        "whole-membrane area term, viscosity the membrane viscosity.");
+                        "whole-membrane area term, viscosity the membrane viscosity, helfrich "
+                        "Helfrich bending about the stress-free shape with kappa = k_bend kBT "
+                        "(in place of bend, which has the limit tau_bend; needs "
+                        "membrane.kernel=reference).");
   table.add_choice("membrane.kernel", entry_names(membrane::membrane_kernel_table()),
                    kMembraneDefaults.kernel,
                    "Force kernel: the fused optimised one, or the plain reference it is tested "
