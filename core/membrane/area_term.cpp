@@ -34,16 +34,10 @@ void AreaTerm::evaluate(const TermContext& context, TermScratch& scratch, TermFo
                      std::span(scratch.energies_pN_um).first(triangle_count), law_.tau(), out);
 
   parallel_for(triangle_count, [&](std::size_t t) {
-    const auto& corners = context.triangles[t];
-    const Vec3 unit_normal = area_vectors_um2[t].normalized();
+    // (3 / P0) n x (opposite edge) = (6 / P0) dA/dx_k.
     const double coefficient_pN_per_um =
-        -force_scale_pN_ * law_.slope(scratch.deviations[t]) * 3.0 / perimeters_um[t];
-    for (std::size_t k = 0; k < 3; ++k) {
-      const Vec3 opposite_edge_um =
-          context.positions_um[corners[(k + 2) % 3]] - context.positions_um[corners[(k + 1) % 3]];
-      scratch.slot_forces_pN[3 * t + k] =
-          coefficient_pN_per_um * unit_normal.cross(opposite_edge_um);
-    }
+        -force_scale_pN_ * law_.slope(scratch.deviations[t]) * 6.0 / perimeters_um[t];
+    set_area_gradient_slots(context, t, coefficient_pN_per_um, scratch.slot_forces_pN);
   });
   context.stencils.triangle.gather(scratch.slot_forces_pN, out.forces_pN);
 }

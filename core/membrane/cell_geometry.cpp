@@ -48,4 +48,17 @@ void measure_cell_geometry(std::span<const Vec3> positions_um,
   geometry.absolute_curvature_sum_um = absolute_sum_um;
 }
 
+std::array<Vec3, 3> triangle_area_gradients_um(std::span<const Vec3> positions_um,
+                                               const mesh::Triangle& triangle,
+                                               const Vec3& area_vector_um2) {
+  const Vec3 unit_normal = area_vector_um2.normalized();
+  std::array<Vec3, 3> gradients;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Vec3& next = positions_um[triangle[(k + 1) % 3]];
+    const Vec3& after = positions_um[triangle[(k + 2) % 3]];
+    gradients[k] = 0.5 * unit_normal.cross(after - next);
+  }
+  return gradients;
+}
+
 }  // namespace rbcsim::membrane

@@ -2,6 +2,7 @@
 // evaluation into caller-owned arrays (no allocation per call).
 #pragma once
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -30,6 +31,13 @@ struct CellGeometry {
 
 // Fills `geometry` (sized for this mesh): the per-element measures in parallel, the cell sums
 // serially in element order so that they do not depend on the thread count.
+// The gradient of a triangle's area by its corners, dA/dx_k = (1/2) n x (x_{k+2} - x_{k+1}) for a
+// counter-clockwise triangle with area vector `area_vector_um2` (in-plane, perpendicular to the
+// opposite edge), um. Shared by every area-based term.
+std::array<Vec3, 3> triangle_area_gradients_um(std::span<const Vec3> positions_um,
+                                               const mesh::Triangle& triangle,
+                                               const Vec3& area_vector_um2);
+
 void measure_cell_geometry(std::span<const Vec3> positions_um,
                            std::span<const mesh::Triangle> triangles,
                            const mesh::MeshTopology& topology, CellGeometry& geometry);

@@ -35,6 +35,15 @@ void require_within_limit(std::string_view term, std::string_view element, doubl
   throw RuntimeFailure(message.str());
 }
 
+void set_area_gradient_slots(const TermContext& context, std::size_t t,
+                             double coefficient_pN_per_um, std::span<Vec3> slot_forces_pN) {
+  const auto gradients_um = triangle_area_gradients_um(
+      context.positions_um, context.triangles[t], context.geometry.triangle_area_vectors_um2[t]);
+  for (std::size_t k = 0; k < 3; ++k) {
+    slot_forces_pN[3 * t + k] = coefficient_pN_per_um * gradients_um[k];
+  }
+}
+
 void summarize_elements(std::string_view term, std::string_view element_kind,
                         std::span<const double> deviations, std::span<const double> energies_pN_um,
                         double tau, TermForces& out) {

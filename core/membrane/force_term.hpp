@@ -72,6 +72,11 @@ class ForceTerm {
                         TermForces& out) const = 0;
 };
 
+// Triangle t's three slots (3 t + k) of a force coefficient_pN_per_um x dA_t/dx_k
+// (triangle_area_gradients_um): the corner forces of every area-based term.
+void set_area_gradient_slots(const TermContext& context, std::size_t t,
+                             double coefficient_pN_per_um, std::span<Vec3> slot_forces_pN);
+
 // Scans deviations[i] for |d| >= tau in element order (the first offender is reported, whatever
 // the thread count), then sets out.energy_pN_um = sum of energies and out.max_abs_deviation.
 void summarize_elements(std::string_view term, std::string_view element_kind,

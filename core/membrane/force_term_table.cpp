@@ -39,6 +39,10 @@ std::vector<ForceTermEntry> built_in_terms() {
        [](const MembraneParameters& p, const ReferenceState&) -> std::unique_ptr<ForceTerm> {
          return std::make_unique<HelfrichTerm>(p);
        }},
+      {"local_area",
+       [](const MembraneParameters& p, const ReferenceState&) -> std::unique_ptr<ForceTerm> {
+         return std::make_unique<LocalAreaTerm>(p);
+       }},
       {"viscosity",
        [](const MembraneParameters& p, const ReferenceState&) -> std::unique_ptr<ForceTerm> {
          return std::make_unique<ViscosityTerm>(p);

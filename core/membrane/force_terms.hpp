@@ -70,6 +70,20 @@ class TotalAreaTerm final : public ForceTerm {
 // The total_area term's failure (both kernels): RuntimeFailure for a non-finite deviation.
 [[noreturn]] void fail_non_finite_total_area(double deviation);
 
+// The bilayer's local area (not in the paper; Fedosov et al. 2010's local area energy, Mirheo's
+// ka): per triangle, d = (A - A0)/A0 and E_t = K A0 d^2 / 2 with K the local-area modulus, so
+// F_k = -K d dA/dx_k. Beside the paper's skeleton term (Eq. 8, soft until its limit tau_a), the
+// bilayer's resistance to a local change of area. Harmonic: no limit; NaN still fails. No fused
+// twin yet (the reference kernel runs it).
+class LocalAreaTerm final : public ForceTerm {
+ public:
+  explicit LocalAreaTerm(const MembraneParameters& parameters);
+  void evaluate(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
+
+ private:
+  double modulus_pN_per_um_;
+};
+
 // Membrane viscosity (not in the paper; Fedosov et al. 2010): friction on every edge from the
 // relative velocity of its vertices (edge_friction.hpp), eta_m = viscosity_Pa_s_um shared by
 // viscosity_split. Dissipative: its forces depend on TermContext::velocities_um_per_s (none at

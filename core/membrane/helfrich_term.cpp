@@ -68,21 +68,13 @@ void HelfrichTerm::evaluate(const TermContext& context, TermScratch& scratch,
   });
   context.stencils.hinge.gather(scratch.slot_forces_pN, out.forces_pN);
 
-  const auto& area_vectors_um2 = geometry.triangle_area_vectors_um2;
   parallel_for(context.triangles.size(), [&](std::size_t t) {
     const auto& corners = context.triangles[t];
     const double per_area_pN_per_um =
         (area_loads_pN_per_um[corners[0]] + area_loads_pN_per_um[corners[1]] +
          area_loads_pN_per_um[corners[2]]) /
         3.0;
-    const Vec3 unit_normal = area_vectors_um2[t].normalized();
-    for (std::size_t k = 0; k < 3; ++k) {
-      const Vec3 opposite_um =
-          context.positions_um[corners[(k + 2) % 3]] - context.positions_um[corners[(k + 1) % 3]];
-      // -dE/dA_t dA_t/dx_k, with dA_t/dx_k = (1/2) n x (opposite edge).
-      scratch.slot_forces_pN[3 * t + k] =
-          -per_area_pN_per_um * 0.5 * unit_normal.cross(opposite_um);
-    }
+    set_area_gradient_slots(context, t, -per_area_pN_per_um, scratch.slot_forces_pN);
   });
   context.stencils.triangle.add_gathered(scratch.slot_forces_pN, out.forces_pN);
 }

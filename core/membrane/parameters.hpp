@@ -51,6 +51,11 @@ struct MembraneParameters {
   // cannot integrate at the paper's lattice (docs/physics.md, "the whole-membrane area").
   double total_area_modulus_uN_per_m = 5000.0;
 
+  // Per-triangle area modulus K of the local_area term (force_terms.hpp), pN/um = uN/m. The
+  // bilayer's local area incompressibility as a constraint: 500 uN/m, a tenth of total_area's
+  // default (docs/physics.md, "the bilayer's local area").
+  double local_area_modulus_uN_per_m = 500.0;
+
   // 2D membrane viscosity eta_m of the viscosity term (edge_friction.hpp), Pa s um = pN s/um.
   // Default 0.5: Hochmuth & Hampel 1979's surface viscosity of the red cell, 5e-7 N s/m
   // (micropipette recovery; dpdprops' default 0.42 agrees within 20 %). Off unless `viscosity` is

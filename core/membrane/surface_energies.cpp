@@ -21,25 +21,11 @@ void add_hinge_gradient(const SurfaceMeasures& measures, std::size_t e, double p
   }
 }
 
-// dA_t/dx_k = (1/2) n x (x_{k+2} - x_{k+1}) for the corners of a counter-clockwise triangle.
-std::array<Vec3, 3> triangle_area_gradients(std::span<const Vec3> positions_um,
-                                            const mesh::Triangle& triangle,
-                                            const Vec3& area_vector_um2) {
-  const Vec3 unit_normal = area_vector_um2.normalized();
-  std::array<Vec3, 3> gradients;
-  for (std::size_t k = 0; k < 3; ++k) {
-    const Vec3& next = positions_um[triangle[(k + 1) % 3]];
-    const Vec3& after = positions_um[triangle[(k + 2) % 3]];
-    gradients[k] = 0.5 * unit_normal.cross(after - next);
-  }
-  return gradients;
-}
-
 void add_triangle_gradient(const SurfaceMeasures& measures, std::size_t t,
                            double per_area_pN_per_um, std::span<Vec3> gradient_pN) {
   const auto& triangle = measures.triangles[t];
-  const auto gradients = triangle_area_gradients(measures.positions_um, triangle,
-                                                 measures.geometry.triangle_area_vectors_um2[t]);
+  const auto gradients = triangle_area_gradients_um(measures.positions_um, triangle,
+                                                    measures.geometry.triangle_area_vectors_um2[t]);
   for (std::size_t k = 0; k < 3; ++k) gradient_pN[triangle[k]] += per_area_pN_per_um * gradients[k];
 }
 

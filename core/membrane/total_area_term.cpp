@@ -30,16 +30,8 @@ void TotalAreaTerm::evaluate(const TermContext& context, TermScratch& scratch,
   out.max_abs_deviation = std::abs(deviation);
 
   const double coefficient_pN_per_um = -modulus_pN_per_um_ * deviation;
-  const auto& area_vectors_um2 = context.geometry.triangle_area_vectors_um2;
   parallel_for(context.triangles.size(), [&](std::size_t t) {
-    const auto& corners = context.triangles[t];
-    const Vec3 unit_normal = area_vectors_um2[t].normalized();
-    for (std::size_t k = 0; k < 3; ++k) {
-      const Vec3 opposite_um =
-          context.positions_um[corners[(k + 2) % 3]] - context.positions_um[corners[(k + 1) % 3]];
-      scratch.slot_forces_pN[3 * t + k] =
-          coefficient_pN_per_um * 0.5 * unit_normal.cross(opposite_um);
-    }
+    set_area_gradient_slots(context, t, coefficient_pN_per_um, scratch.slot_forces_pN);
   });
   context.stencils.triangle.gather(scratch.slot_forces_pN, out.forces_pN);
 }

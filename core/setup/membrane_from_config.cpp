@@ -11,7 +11,7 @@ constexpr double kPiconewtonMicrometresPerJoule = 1e18;
 using Parameters = membrane::MembraneParameters;
 
 // Options copied unchanged (same name and unit on both sides).
-constexpr std::array<std::pair<const char*, double Parameters::*>, 17> kNumberOptions{{
+constexpr std::array<std::pair<const char*, double Parameters::*>, 18> kNumberOptions{{
     {"membrane.k_link_kBT", &Parameters::k_link_kBT},
     {"membrane.k_bend_kBT", &Parameters::k_bend_kBT},
     {"membrane.k_area_kBT", &Parameters::k_area_kBT},
@@ -28,6 +28,7 @@ constexpr std::array<std::pair<const char*, double Parameters::*>, 17> kNumberOp
     {"membrane.force_length_scale_um", &Parameters::force_length_scale_um},
     {"membrane.vertex_force_cap_pN", &Parameters::vertex_force_cap_pN},
     {"membrane.total_area_modulus_uN_per_m", &Parameters::total_area_modulus_uN_per_m},
+    {"membrane.local_area_modulus_uN_per_m", &Parameters::local_area_modulus_uN_per_m},
     {"membrane.viscosity_Pa_s_um", &Parameters::viscosity_Pa_s_um},
 }};
 

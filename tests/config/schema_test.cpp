@@ -70,7 +70,8 @@ TEST(ConfigSchema, DescribesEveryOptionWithTypeUnitDefaultAndRange) {
   const auto& forces = membrane["properties"]["forces"];
   EXPECT_EQ(forces["type"], "array");
   EXPECT_EQ(forces["uniqueItems"], true);
-  EXPECT_EQ(forces["items"]["enum"].size(), 8u);  // the paper's six, total_area and viscosity
+  // The paper's six, total_area, helfrich, local_area and viscosity.
+  EXPECT_EQ(forces["items"]["enum"].size(), 10u);
   EXPECT_EQ(schema["properties"]["membrane"]["properties"]["forces"]["default"].size(), 6u);
   EXPECT_EQ(schema["properties"]["morphology"]["enum"],
             json({"stomatocyte-II", "discocyte", "echinocyte-III"}));

@@ -75,15 +75,16 @@ TEST(Validation, ChoicesAndLists) {
   EXPECT_EQ(problem_of({{"ibm", {{"kernel", "phi5"}}}}),
             "run.json: ibm.kernel: \"phi5\" is not one of phi2, phi3, phi4; did you mean `phi2`?");
   EXPECT_EQ(problem_of({{"membrane", {{"forces", json::array()}}}}), "");
-  EXPECT_EQ(
-      problem_of({{"membrane", {{"forces", {"link", "bnd"}}}}}),
-      "run.json: membrane.forces: [1]: \"bnd\" is not one of link, bend, area, volume, "
-      "area_difference, total_curvature, total_area, helfrich, viscosity; did you mean `bend`?");
+  EXPECT_EQ(problem_of({{"membrane", {{"forces", {"link", "bnd"}}}}}),
+            "run.json: membrane.forces: [1]: \"bnd\" is not one of link, bend, area, volume, "
+            "area_difference, total_curvature, total_area, helfrich, local_area, viscosity; did "
+            "you mean `bend`?");
   EXPECT_EQ(problem_of({{"membrane", {{"forces", {"link", "link"}}}}}),
             "run.json: membrane.forces: lists \"link\" more than once");
   EXPECT_EQ(problem_of({{"membrane", {{"forces", "link"}}}}),
             "run.json: membrane.forces: expected array of strings, each one of link, bend, area, "
-            "volume, area_difference, total_curvature, total_area, helfrich, viscosity, got string "
+            "volume, area_difference, total_curvature, total_area, helfrich, local_area, "
+            "viscosity, got string "
             "\"link\"");
 }
 

@@ -191,6 +191,52 @@ TEST(TotalAreaTerm, UniformDilationGivesTheHarmonicEnergyAndVirial) {
   }
 }
 
+// The per-triangle twin under the same uniform dilation: every triangle has the same d, so the
+// sum of K A0_t d^2 / 2 is the whole-area energy and the virial is the same, while a dilation of
+// one triangle alone (which total_area barely sees) costs that triangle's K A0_t d^2 / 2.
+TEST(LocalAreaTerm, UniformDilationMatchesTheWholeAreaAndOneTriangleCountsAlone) {
+  const auto mesh = shapes::ellipsoid(3, Vec3(4.0, 3.0, 2.0));
+  auto parameters = only({"local_area"});
+  parameters.kernel = "reference";
+  const MembraneModel model(mesh, parameters);
+  const double modulus = parameters.local_area_modulus_uN_per_m;
+  const double area0_um2 = rbcsim::mesh::surface_area_um2(mesh);
+  const double eps = 0.003;
+  std::vector<Vec3> dilated = mesh.positions_um;
+  for (auto& p : dilated) p *= 1.0 + eps;
+  const auto dilated_forces = shapes::forces_at(model, dilated);
+  const auto& term = dilated_forces.term("local_area");
+  const double d = std::pow(1.0 + eps, 2) - 1.0;
+  EXPECT_NEAR(term.max_abs_deviation, d, 1e-13);
+  const double energy_pN_um = 0.5 * modulus * area0_um2 * d * d;
+  EXPECT_NEAR(term.energy_pN_um, energy_pN_um, 1e-9 * energy_pN_um);
+  double virial_pN_um = 0.0;
+  for (std::size_t v = 0; v < dilated.size(); ++v)
+    virial_pN_um += dilated[v].dot(term.forces_pN[v]);
+  const double expected_pN_um = -2.0 * modulus * d * area0_um2 * std::pow(1.0 + eps, 2);
+  EXPECT_NEAR(virial_pN_um, expected_pN_um, 1e-9 * std::abs(expected_pN_um));
+
+  // Triangle 0's first corner moved towards its opposite edge's midpoint by 10 %: A_0 = 0.9 A0_0,
+  // and only the triangles around that corner change.
+  auto moved = mesh.positions_um;
+  const auto& corners = mesh.triangles[0];
+  const Vec3 midpoint = 0.5 * (moved[corners[1]] + moved[corners[2]]);
+  moved[corners[0]] += 0.1 * (midpoint - moved[corners[0]]);
+  const auto moved_forces = shapes::forces_at(model, moved);
+  const auto& local = moved_forces.term("local_area");
+  double expected_energy_pN_um = 0.0;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const double a0 =
+        rbcsim::mesh::triangle_area_vector(mesh.positions_um, mesh.triangles[t]).norm();
+    const double a = rbcsim::mesh::triangle_area_vector(moved, mesh.triangles[t]).norm();
+    expected_energy_pN_um += 0.5 * modulus * (a - a0) * (a - a0) / a0;
+    if (t == 0) {
+      EXPECT_NEAR(a / a0, 0.9, 1e-12);
+    }
+  }
+  EXPECT_NEAR(local.energy_pN_um, expected_energy_pN_um, 1e-9 * expected_energy_pN_um);
+}
+
 // Not one of the paper's six: the default membrane leaves it out, and a non-finite shape fails
 // it loudly in both kernels.
 TEST(TotalAreaTerm, IsOffByDefaultAndFailsOnANonFiniteArea) {

@@ -122,7 +122,7 @@ TEST_F(RegisteredTerm, AnUnknownTermIsRefusedWithTheRegisteredNames) {
     EXPECT_EQ(
         message.find(
             "membrane.forces: \"tension\" is not one of link, bend, area, volume, area_difference, "
-            "total_curvature, total_area, helfrich, viscosity, test_centring"),
+            "total_curvature, total_area, helfrich, local_area, viscosity, test_centring"),
         0u)
         << message;
   }

@@ -71,6 +71,8 @@ double law_force_pN(const std::string& term, const MembraneParameters& p, double
   // The harmonic whole-area term: K |d| times a corner's |dA/dx|, about half an edge (L0).
   if (term == "total_area")
     return p.total_area_modulus_uN_per_m * std::abs(d) * p.force_length_scale_um;
+  if (term == "local_area")
+    return p.local_area_modulus_uN_per_m * std::abs(d) * p.force_length_scale_um;
   // Helfrich, d = |H - H0| (1/um): dE/dM = 4 kappa d, and |dM/dx| is of order one.
   if (term == "helfrich") return 4.0 * p.k_bend_kBT * p.thermal_energy_pN_um * std::abs(d);
   struct Law {

@@ -77,6 +77,15 @@ void add_limits(OptionTable& table) {
                   "Modulus K of the whole-membrane area term, E = K (A - A0)^2 / (2 A0); acts "
                   "only when membrane.forces names total_area (not one of the paper's six).")
       .at_least(0.0);
+  // Not in the paper: the bilayer's local area incompressibility, per triangle (Fedosov et al.
+  // 2010's local area energy; Mirheo's ka). docs/physics.md derives the default.
+  table
+      .add_number("membrane.local_area_modulus_uN_per_m", "uN/m",
+                  kMembraneDefaults.local_area_modulus_uN_per_m,
+                  "Modulus K of the per-triangle area term, E = sum_t K (A_t - A0_t)^2 / (2 A0_t); "
+                  "acts only when membrane.forces names local_area (not one of the paper's six; "
+                  "needs membrane.kernel=reference).")
+      .at_least(0.0);
   // Not in the paper either: membrane viscosity as edge friction (Fedosov et al. 2010). The
   // default is Hochmuth & Hampel 1979's measured surface viscosity.
   table
@@ -115,8 +124,8 @@ void add_scales_and_variants(OptionTable& table) {
                         "Force terms switched on: the paper's six by default; total_area adds the "
                         "whole-membrane area term, viscosity the membrane viscosity, helfrich "
                         "Helfrich bending about the stress-free shape with kappa = k_bend kBT "
-                        "(in place of bend, which has the limit tau_bend; needs "
-                        "membrane.kernel=reference).");
+                        "(in place of bend, which has the limit tau_bend), local_area the "
+                        "bilayer's per-triangle area (both need membrane.kernel=reference).");
   table.add_choice("membrane.kernel", entry_names(membrane::membrane_kernel_table()),
                    kMembraneDefaults.kernel,
                    "Force kernel: the fused optimised one, or the plain reference it is tested "
