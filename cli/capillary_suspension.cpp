@@ -4,7 +4,6 @@
 #include <cstdio>
 #include <iostream>
 #include <numbers>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -147,9 +146,7 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
   const auto intervals = setup::snapshot_intervals_from(simulated, physics.units, directory.path());
   const Progress progress(common);
   const double duration_s = config.number("suspension.duration_s");
-  // Where the coupled run was (physical time, wall time) when progress first looked: the rate
-  // since then, not the set-up's, estimates the wall time left.
-  std::optional<ProgressPoint> first_seen;
+  WallTimeLeft time_left(duration_s);
   bool started = false;
   auto run = cases::run_suspension(
       morphologies, cells, physics, settings, [&](coupling::CoupledSimulation& simulation) {
@@ -158,12 +155,11 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
             {"progress", kProgressIntervalSteps, [&](const coupling::CoupledSimulation& s) {
                const double time_s = s.time_s() * compression.factor;
                const double wall_s = directory.elapsed_s();
-               if (!first_seen) first_seen = ProgressPoint{time_s, wall_s};
                progress.update("suspension: step " + std::to_string(s.time_step()) +
                                ", t = " + format_significant(time_s) + " of " +
                                format_significant(duration_s) + " s, " +
                                format_number(std::round(wall_s)) + " s" +
-                               wall_time_left_text(*first_seen, {time_s, wall_s}, duration_s));
+                               time_left.text(time_s, wall_s));
              }});
         // After the output observers (a resume restores their state), before the directory is
         // started (a refused checkpoint leaves no file behind).

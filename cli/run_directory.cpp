@@ -256,8 +256,9 @@ std::string summary_heading(const std::string& command, const std::string& varia
   return heading;
 }
 
-std::string wall_time_left_text(ProgressPoint first, ProgressPoint now, double total) {
-  const auto left_s = wall_time_left_s(first, now, total);
+std::string WallTimeLeft::text(double measure, double wall_s) {
+  if (!first_) first_ = ProgressPoint{measure, wall_s};
+  const auto left_s = wall_time_left_s(*first_, {measure, wall_s}, total_);
   return left_s ? ", about " + format_number(std::round(*left_s)) + " s left" : "";
 }
 

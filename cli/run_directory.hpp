@@ -97,8 +97,18 @@ std::optional<nlohmann::json> read_finished_record(const std::filesystem::path& 
 std::string summary_heading(const std::string& command, const std::string& variant,
                             const nlohmann::ordered_json& result);
 
-// ", about N s left" for a progress line (wall_time_left_s), or "" before the run has moved.
-std::string wall_time_left_text(ProgressPoint first, ProgressPoint now, double total);
+// The wall time left of one coupled run for its progress lines, extrapolated (wall_time_left_s)
+// from the first point it is shown, so that the rate is the run's own and not its set-up's.
+class WallTimeLeft {
+ public:
+  explicit WallTimeLeft(double total) : total_(total) {}
+  // ", about N s left" at `measure` after `wall_s`, or "" before the run has moved.
+  std::string text(double measure, double wall_s);
+
+ private:
+  double total_;
+  std::optional<ProgressPoint> first_;
+};
 
 // Progress on stderr (docs/architecture.md: results go to files and stdout, so pipelines
 // never see progress). On a terminal, unless --quiet: one line, overwritten. Otherwise only with

@@ -313,9 +313,8 @@ void run_sheared_suspension_command(const config::ConfigRequest& request,
                                            setup::coupling_parameters_from(simulated, rate_path),
                                            config::make_unit_converter(simulated)};
     const auto intervals = setup::snapshot_intervals_from(simulated, physics.units, rate_path);
-    // Where this rate's coupled run was when progress first looked (it outlives the set-up
-    // callback below, which only registers the observer): the wall time left is this rate's.
-    std::optional<ProgressPoint> first_seen;
+    // This rate's own (it outlives the set-up callback below, which only registers the observer).
+    WallTimeLeft time_left(settings.strain);
     point.run = cases::run_sheared_suspension(
         morphologies, cells, physics, settings, [&](coupling::CoupledSimulation& simulation) {
           std::filesystem::create_directories(rate_path);
@@ -324,9 +323,7 @@ void run_sheared_suspension_command(const config::ConfigRequest& request,
               {"progress", kShearProgressIntervalSteps, [&](const coupling::CoupledSimulation& s) {
                  const double strain = s.time_s() * settings.shear_rate_per_s;
                  const double wall_s = directory.elapsed_s();
-                 if (!first_seen) first_seen = ProgressPoint{strain, wall_s};
-                 const auto left =
-                     wall_time_left_text(*first_seen, {strain, wall_s}, settings.strain);
+                 const auto left = time_left.text(strain, wall_s);
                  progress.update("shear suspension: rate " + std::to_string(i + 1) + "/" +
                                  std::to_string(rates.size()) + ", step " +
                                  std::to_string(s.time_step()) + ", strain " +
