@@ -36,8 +36,8 @@ std::vector<ForceTermEntry> built_in_terms() {
          return std::make_unique<TotalAreaTerm>(p, r);
        }},
       {"helfrich",
-       [](const MembraneParameters& p, const ReferenceState&) -> std::unique_ptr<ForceTerm> {
-         return std::make_unique<HelfrichTerm>(p);
+       [](const MembraneParameters& p, const ReferenceState& r) -> std::unique_ptr<ForceTerm> {
+         return std::make_unique<HelfrichTerm>(p, r);
        }},
       {"local_area",
        [](const MembraneParameters& p, const ReferenceState&) -> std::unique_ptr<ForceTerm> {

@@ -73,8 +73,8 @@ class TotalAreaTerm final : public ForceTerm {
 // The bilayer's local area (not in the paper; Fedosov et al. 2010's local area energy, Mirheo's
 // ka): per triangle, d = (A - A0)/A0 and E_t = K A0 d^2 / 2 with K the local-area modulus, so
 // F_k = -K d dA/dx_k. Beside the paper's skeleton term (Eq. 8, soft until its limit tau_a), the
-// bilayer's resistance to a local change of area. Harmonic: no limit; NaN still fails. No fused
-// twin yet (the reference kernel runs it).
+// bilayer's resistance to a local change of area. Harmonic: no limit; NaN still fails. Not fused:
+// the optimised kernel runs this class beside its fused terms.
 class LocalAreaTerm final : public ForceTerm {
  public:
   explicit LocalAreaTerm(const MembraneParameters& parameters);
@@ -103,10 +103,12 @@ class ViscosityTerm final : public ForceTerm {
 // the bending modulus of Evans 1983 and Lim et al. 2002), H0_v the reference shape's mean
 // curvature. The paper's bending (Eq. 7) without its limit tau_bend: a harmonic energy in the
 // curvature, so a fold costs energy but never stops the run. Exact gradient, central; reads no
-// distribution. Vertex-based: no fused twin yet (it runs on the reference kernel).
+// distribution. Vertex-based and not fused: the optimised kernel runs this class beside its
+// fused terms.
 class HelfrichTerm final : public ForceTerm {
  public:
-  explicit HelfrichTerm(const MembraneParameters& parameters);
+  // Throws std::invalid_argument for a reference without vertex_mean_curvatures_per_um.
+  HelfrichTerm(const MembraneParameters& parameters, const ReferenceState& reference);
   void evaluate(const TermContext& context, TermScratch& scratch, TermForces& out) const override;
 
  private:

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <stdexcept>
 
 #include "membrane/force_terms.hpp"
 #include "membrane/parallel.hpp"
@@ -17,14 +18,19 @@
 
 namespace rbcsim::membrane {
 
-HelfrichTerm::HelfrichTerm(const MembraneParameters& parameters)
-    : bending_modulus_pN_um_(parameters.k_bend_kBT * parameters.thermal_energy_pN_um) {}
+HelfrichTerm::HelfrichTerm(const MembraneParameters& parameters, const ReferenceState& reference)
+    : bending_modulus_pN_um_(parameters.k_bend_kBT * parameters.thermal_energy_pN_um) {
+  if (reference.vertex_mean_curvatures_per_um.empty()) {
+    throw std::invalid_argument(
+        "membrane term 'helfrich': the reference state has no mean curvature per vertex");
+  }
+}
 
 void HelfrichTerm::evaluate(const TermContext& context, TermScratch& scratch,
                             TermForces& out) const {
   const auto& topology = context.topology;
   const auto& geometry = context.geometry;
-  const auto& reference = context.reference;
+  const auto& reference_per_um = context.reference.vertex_mean_curvatures_per_um;
   const auto vertex_count = topology.vertex_count();
   const double kappa = bending_modulus_pN_um_;
   // Per vertex: u_v in deviations[v], dE/dA_v in deviations[V + v], the energy in energies[v]
@@ -39,11 +45,7 @@ void HelfrichTerm::evaluate(const TermContext& context, TermScratch& scratch,
         integrated_mean_curvature_um(topology, geometry.edge_lengths_um,
                                      geometry.dihedral_angles_rad, v) /
         area_um2;
-    const double reference_per_um =
-        integrated_mean_curvature_um(topology, reference.edge_lengths_um,
-                                     reference.dihedral_angles_rad, v) /
-        vertex_area_um2(topology, reference.triangle_areas_um2, v);
-    const double departure = mean_curvature_per_um - reference_per_um;
+    const double departure = mean_curvature_per_um - reference_per_um[v];
     departures_per_um[v] = departure;
     area_loads_pN_per_um[v] = 2.0 * kappa * departure * (departure - 2.0 * mean_curvature_per_um);
     energies_pN_um[v] = 2.0 * kappa * departure * departure * area_um2;

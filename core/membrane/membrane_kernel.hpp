@@ -3,7 +3,8 @@
 //   "reference"  one plain loop per force term (the classes of force_terms.hpp): the readable
 //                definition of the forces, kept forever to test the optimised kernel against.
 //   "optimised"  the six terms fused into one pass over the edges and one over the triangles,
-//                then one gather per vertex (optimised_kernel.cpp). The default.
+//                then one gather per vertex (optimised_kernel.cpp). The default. A term it has
+//                not fused (helfrich, local_area) runs beside them as its reference class.
 // Both fill the same MembraneForces; their results agree to round-off (tests/membrane,
 // kernel_equivalence_test.cpp) and neither depends on the thread count.
 #pragma once
@@ -68,7 +69,11 @@ std::span<const MembraneKernelEntry> membrane_kernel_table();
 const MembraneKernelEntry& find_membrane_kernel(std::string_view name);
 
 std::unique_ptr<MembraneKernel> make_reference_kernel(const MembraneModel& model);
-// The terms the optimised kernel fuses, in registry order; any other runs on the reference kernel.
+// Sizes the reference kernel's part of a workspace (its geometry and term scratch), which the
+// optimised kernel also uses for the terms it has not fused.
+void size_term_workspace(const MembraneModel& model, MembraneWorkspace& workspace);
+// The terms the optimised kernel fuses, in registry order; it runs any other beside them as the
+// reference kernel does.
 std::vector<std::string> fused_force_term_names();
 std::unique_ptr<MembraneKernel> make_optimised_kernel(const MembraneModel& model);
 

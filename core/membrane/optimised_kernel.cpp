@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -53,14 +54,11 @@ namespace {
 
 using namespace optimised;
 
-Term term_of(std::string_view name) {
+// The fused term of that name, or none: a term registered beyond them (docs/architecture.md,
+// "Adding a force term") runs beside the fused ones as its own ForceTerm until it is fused here.
+std::optional<Term> fused_term_of(std::string_view name) {
   const auto* found = std::find(kTermNames.begin(), kTermNames.end(), name);
-  if (found == kTermNames.end()) {
-    // A term registered beyond the six (docs/architecture.md, "Adding a force term") runs in the
-    // reference kernel until it is fused here.
-    throw InputError("membrane.kernel", "\"optimised\" fuses only the built-in terms, not " +
-                                            in_quotes(name) + "; use \"reference\"");
-  }
+  if (found == kTermNames.end()) return std::nullopt;
   return static_cast<Term>(found - kTermNames.begin());
 }
 
@@ -117,7 +115,9 @@ FusedConstants make_constants(const MembraneModel& model, const FusedDistributio
                               reference.absolute_curvature_sum_um},
       .total_area_modulus_pN_per_um = p.total_area_modulus_uN_per_m,
   };
-  for (auto name : model.kernel_term_names()) constants.enabled[term_of(name)] = true;
+  for (auto name : model.kernel_term_names()) {
+    if (const auto term = fused_term_of(name)) constants.enabled[*term] = true;
+  }
   constants.angle_terms = constants.enabled[kBend] || constants.enabled[kAreaDifference] ||
                           constants.enabled[kTotalCurvature];
   return constants;
@@ -172,8 +172,8 @@ VertexGather make_incidence(const MembraneModel& model) {
 struct CellSummary {
   CellDeviations cell;
   std::array<double, kTermCount> max_abs_deviation{};  // per term, enabled or not
-  // Index in MembraneForces::terms of the first enabled term (registry order) whose deviation
-  // reached its limit, or -1.
+  // Index among the fused terms (registry order) of the first whose deviation reached its limit,
+  // or -1.
   std::ptrdiff_t failed_term = -1;
   SlotWeights weights{};
 };
@@ -190,11 +190,26 @@ class OptimisedKernel final : public MembraneKernel {
     // this kernel accepts exactly what the reference kernel accepts.
     make_force_terms(model.kernel_term_names(), model.parameters(), model.reference());
     for (const auto& entry : hinge_distribution_table()) find_fused_distribution(entry.name);
-    for (auto name : model.kernel_term_names()) enabled_terms_.push_back(term_of(name));
+    const auto names = model.kernel_term_names();
+    for (std::size_t i = 0; i < names.size(); ++i) {
+      if (const auto term = fused_term_of(names[i])) {
+        enabled_terms_.push_back(*term);
+        fused_indices_.push_back(i);
+      } else {
+        unfused_.push_back({i, std::move(make_force_terms(std::span(names).subspan(i, 1),
+                                                          model.parameters(), model.reference())
+                                             .front())});
+      }
+    }
+    if (!unfused_.empty()) {
+      stencils_ =
+          std::make_unique<MeshStencils>(MeshStencils::build(model.triangles(), model.topology()));
+    }
   }
 
-  MembraneWorkspace make_workspace(const MembraneModel&) const override {
+  MembraneWorkspace make_workspace(const MembraneModel& model) const override {
     MembraneWorkspace workspace;
+    if (!unfused_.empty()) size_term_workspace(model, workspace);
     auto& s = workspace.optimised;
     const auto edges = edge_count();
     const auto triangles = triangle_count();
@@ -227,6 +242,7 @@ class OptimisedKernel final : public MembraneKernel {
         scratch.triangle_normals_um2.x.size() != triangle_count()) {
       throw std::invalid_argument("membrane forces: the workspace was not made by this model");
     }
+    evaluate_unfused(model, positions_um, workspace, forces);
     // Vec3 is three contiguous doubles: the passes read the positions as x, y, z triples.
     const double* positions_xyz = positions_um.data()->data();
     const auto vertex_count = static_cast<std::ptrdiff_t>(model.vertex_count());
@@ -248,6 +264,9 @@ class OptimisedKernel final : public MembraneKernel {
 #pragma omp for schedule(static) nowait reduction(+ : capped) reduction(min : first_non_finite)
         for (std::ptrdiff_t v = 0; v < vertex_count; ++v) {
           Vec3 total_pN = sum_slots(static_cast<std::size_t>(v), scratch.slot_forces_pN);
+          for (const auto& term : unfused_) {
+            total_pN += forces.terms[term.index].forces_pN[static_cast<std::size_t>(v)];
+          }
           bool finite = true;
           if (clamp_to_force_cap(total_pN, cap_pN, finite)) ++capped;
           if (!finite) first_non_finite = std::min(first_non_finite, v);
@@ -257,7 +276,8 @@ class OptimisedKernel final : public MembraneKernel {
     }
     forces.cell = summary.cell;
     for (std::size_t i = 0; i < enabled_terms_.size(); ++i) {
-      forces.terms[i].max_abs_deviation = summary.max_abs_deviation[enabled_terms_[i]];
+      forces.terms[fused_indices_[i]].max_abs_deviation =
+          summary.max_abs_deviation[enabled_terms_[i]];
     }
     if (summary.failed_term >= 0) {
       report_limit(enabled_terms_[static_cast<std::size_t>(summary.failed_term)], scratch,
@@ -274,6 +294,21 @@ class OptimisedKernel final : public MembraneKernel {
 
  private:
   std::size_t edge_count() const { return hinges_.vertices.size(); }
+
+  // The unfused terms, each into its own entry of forces.terms (resized: no allocation after the
+  // first call), on the reference kernel's geometry; the gather adds them before the cap.
+  void evaluate_unfused(const MembraneModel& model, std::span<const Vec3> positions_um,
+                        MembraneWorkspace& workspace, MembraneForces& forces) const {
+    if (unfused_.empty()) return;
+    measure_cell_geometry(positions_um, model.triangles(), model.topology(), workspace.geometry);
+    const TermContext context{positions_um, model.triangles(), model.topology(),
+                              *stencils_,   model.reference(), workspace.geometry};
+    for (const auto& term : unfused_) {
+      auto& out = forces.terms[term.index];
+      out.forces_pN.resize(model.vertex_count());
+      term.term->evaluate(context, workspace.scratch, out);
+    }
+  }
   std::size_t triangle_count() const { return corners_.corners.size(); }
 
   // Step 2: cell sums, deviations, limit checks, coefficients. Never throws (it runs inside the
@@ -380,7 +415,7 @@ class OptimisedKernel final : public MembraneKernel {
       SlotWeights only_this_term{};
       only_this_term[enabled_terms_[i]] = weights[enabled_terms_[i]];
       weigh_slots(only_this_term, scratch);
-      auto& out = forces.terms[i].forces_pN;
+      auto& out = forces.terms[fused_indices_[i]].forces_pN;
 #pragma omp for schedule(static)
       for (std::ptrdiff_t v = 0; v < vertex_count; ++v) {
         const auto vertex = static_cast<std::size_t>(v);
@@ -388,7 +423,7 @@ class OptimisedKernel final : public MembraneKernel {
       }
     }
     for (std::size_t i = 0; i < enabled_terms_.size(); ++i) {
-      forces.terms[i].energy_pN_um =
+      forces.terms[fused_indices_[i]].energy_pN_um =
           energy(enabled_terms_[i], model.reference(), scratch, forces.cell);
     }
   }
@@ -469,7 +504,14 @@ class OptimisedKernel final : public MembraneKernel {
   HingeStencils hinges_;
   CornerStencils corners_;
   VertexGather incidence_;
-  std::vector<Term> enabled_terms_;  // registry order, as MembraneForces::terms
+  std::vector<Term> enabled_terms_;         // the fused terms, in registry order
+  std::vector<std::size_t> fused_indices_;  // their entries in MembraneForces::terms
+  struct UnfusedTerm {
+    std::size_t index;  // its entry in MembraneForces::terms
+    std::unique_ptr<ForceTerm> term;
+  };
+  std::vector<UnfusedTerm> unfused_;
+  std::unique_ptr<MeshStencils> stencils_;  // the unfused terms' (none without them)
 };
 
 }  // namespace

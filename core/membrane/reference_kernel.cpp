@@ -21,13 +21,8 @@ class ReferenceKernel final : public MembraneKernel {
             make_force_terms(model.kernel_term_names(), model.parameters(), model.reference())) {}
 
   MembraneWorkspace make_workspace(const MembraneModel& model) const override {
-    const auto edges = model.topology().edge_count();
-    const auto triangles = model.topology().triangle_count();
-    const auto elements = std::max(edges, triangles);
     MembraneWorkspace workspace;
-    workspace.geometry = CellGeometry(triangles, edges);
-    workspace.scratch = TermScratch{std::vector<double>(elements), std::vector<double>(elements),
-                                    std::vector<Vec3>(4 * edges), 0.0};
+    size_term_workspace(model, workspace);
     return workspace;
   }
 
@@ -76,6 +71,15 @@ class ReferenceKernel final : public MembraneKernel {
 };
 
 }  // namespace
+
+void size_term_workspace(const MembraneModel& model, MembraneWorkspace& workspace) {
+  const auto edges = model.topology().edge_count();
+  const auto triangles = model.topology().triangle_count();
+  const auto elements = std::max(edges, triangles);
+  workspace.geometry = CellGeometry(triangles, edges);
+  workspace.scratch = TermScratch{std::vector<double>(elements), std::vector<double>(elements),
+                                  std::vector<Vec3>(4 * edges), 0.0};
+}
 
 std::unique_ptr<MembraneKernel> make_reference_kernel(const MembraneModel& model) {
   return std::make_unique<ReferenceKernel>(model);

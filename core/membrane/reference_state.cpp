@@ -4,6 +4,7 @@
 
 #include "common/errors.hpp"
 #include "membrane/cell_geometry.hpp"
+#include "membrane/surface_energies.hpp"
 #include "membrane/vertex_patch.hpp"
 
 namespace rbcsim::membrane {
@@ -68,6 +69,13 @@ ReferenceState capture_reference_state(std::span<const Vec3> positions_um,
   std::vector<Vec3> normals(topology.vertex_count());
   reference.vertex_offsets_um.resize(topology.vertex_count());
   measure_vertex_patches(positions_um, triangles, topology, normals, reference.vertex_offsets_um);
+  reference.vertex_mean_curvatures_per_um.resize(topology.vertex_count());
+  for (std::size_t v = 0; v < topology.vertex_count(); ++v) {
+    reference.vertex_mean_curvatures_per_um[v] =
+        integrated_mean_curvature_um(topology, reference.edge_lengths_um,
+                                     reference.dihedral_angles_rad, v) /
+        vertex_area_um2(topology, reference.triangle_areas_um2, v);
+  }
   return reference;
 }
 

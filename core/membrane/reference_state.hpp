@@ -30,6 +30,9 @@ struct ReferenceState {
   // M0_i per vertex: the offset of each vertex from its ring's centroid along its patch normal
   // (vertex_patch.hpp), the reference of the per-vertex bending form, um.
   std::vector<double> vertex_offsets_um;
+  // H0_v = M0_v / A0_v per vertex, Juelicher's mean curvature of the reference (the helfrich
+  // term's spontaneous curvature, helfrich_term.cpp), 1/um.
+  std::vector<double> vertex_mean_curvatures_per_um;
 };
 
 // The mean of the reference edge lengths L0, um.

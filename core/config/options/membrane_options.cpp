@@ -83,8 +83,7 @@ void add_limits(OptionTable& table) {
       .add_number("membrane.local_area_modulus_uN_per_m", "uN/m",
                   kMembraneDefaults.local_area_modulus_uN_per_m,
                   "Modulus K of the per-triangle area term, E = sum_t K (A_t - A0_t)^2 / (2 A0_t); "
-                  "acts only when membrane.forces names local_area (not one of the paper's six; "
-                  "needs membrane.kernel=reference).")
+                  "acts only when membrane.forces names local_area (not one of the paper's six).")
       .at_least(0.0);
   // Not in the paper either: membrane viscosity as edge friction (Fedosov et al. 2010). The
   // default is Hochmuth & Hampel 1979's measured surface viscosity.
@@ -125,7 +124,7 @@ void add_scales_and_variants(OptionTable& table) {
                         "whole-membrane area term, viscosity the membrane viscosity, helfrich "
                         "Helfrich bending about the stress-free shape with kappa = k_bend kBT "
                         "(in place of bend, which has the limit tau_bend), local_area the "
-                        "bilayer's per-triangle area (both need membrane.kernel=reference).");
+                        "bilayer's per-triangle area.");
   table.add_choice("membrane.kernel", entry_names(membrane::membrane_kernel_table()),
                    kMembraneDefaults.kernel,
                    "Force kernel: the fused optimised one, or the plain reference it is tested "
