@@ -97,8 +97,10 @@ TEST(ResolveConfig, MorphologyComesFromTheLastSourceThatSetsIt) {
 }
 
 // The presets (share/config/presets): `paper` is the paper's membrane as printed, the default;
-// `physiological` adds the bilayer's area incompressibility, membrane viscosity and the
-// cytoplasm's viscosity at their literature values. Every other layer (morphology, files, --set) goes over a preset.
+// `physiological` bends as the bilayer does (Helfrich's energy in place of Eq. 7), adds the
+// bilayer's area incompressibility (whole and per triangle), membrane viscosity and the
+// cytoplasm's viscosity at their literature values. Every other layer (morphology, files, --set)
+// goes over a preset.
 TEST(ResolveConfig, PresetsAreWholeParameterSetsUnderEveryOtherLayer) {
   const auto paper = resolve_config();
   EXPECT_EQ(paper.string("preset"), "paper");
@@ -108,8 +110,9 @@ TEST(ResolveConfig, PresetsAreWholeParameterSetsUnderEveryOtherLayer) {
   const auto physiological = resolve_config({.morphology = "echinocyte-III",
                                              .preset = "physiological"});
   EXPECT_EQ(physiological.string("preset"), "physiological");
-  auto with_both = six;
-  with_both.insert(with_both.end(), {"total_area", "viscosity"});
+  const std::vector<std::string> with_both = {"link",       "helfrich",        "area",
+                                              "volume",     "area_difference", "total_curvature",
+                                              "total_area", "local_area",      "viscosity"};
   EXPECT_EQ(physiological.string_list("membrane.forces"), with_both);
   EXPECT_EQ(physiological.number("membrane.viscosity_Pa_s_um"), 0.5);  // Hochmuth & Hampel 1979
   EXPECT_EQ(physiological.number("physics.cytoplasm_viscosity_ratio"), 5.0);

@@ -37,9 +37,9 @@ void add_morphology_options(OptionTable& table) {
   table.add_choice("preset", presets(), "paper",
                    "Whole parameter set under the morphology's and the user's settings: paper (the "
                    "paper's six forces as printed, plasma inside the cell, no membrane "
-                   "viscosity) or physiological (plus the bilayer's area incompressibility, "
-                   "membrane viscosity and a cytoplasm five times as viscous as plasma; "
-                   "docs/physics.md).");
+                   "viscosity) or physiological (Helfrich bending in place of Eq. 7, plus the "
+                   "bilayer's area incompressibility, whole and per triangle, membrane viscosity "
+                   "and a cytoplasm five times as viscous as plasma; docs/physics.md).");
 }
 
 }  // namespace rbcsim::config
