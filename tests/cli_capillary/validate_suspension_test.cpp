@@ -6,15 +6,17 @@
 // What makes a run a comparison, not a number: the flow must have developed (the cells carried
 // 25 tube diameters or more; Chien et al. need 25-50 for the Fahraeus-Lindqvist effect to
 // establish), no two cells may have passed through each other in any sample, and the run must end
-// by its duration (exit 0). The physiological preset (membrane viscosity, the bilayer's area, a
-// viscous cytoplasm) and 2562-vertex cells: the paper's membrane fails in this tube within 2-7 ms.
+// by its duration (exit 0). The physiological preset (Helfrich bending, membrane viscosity, the
+// bilayer's area, a viscous cytoplasm) and 2562-vertex cells: the paper's membrane fails in this
+// tube within 2-7 ms.
 //
 // The time scale is compressed up to a Reynolds number of 0.5 (suspension.max_reynolds_number;
 // physical Re 0.018): a 642-vertex run at 0.5 followed the one at 0.2 within 0.15 % in viscosity
 // over 13 ms, in 2.5 times fewer steps (docs/validation.md, suspensions).
 //
-// Fails today (6 December 2026): a cell's trailing rim folds past the bending law's 30 degree
-// limit after 41 ms, 6.9 tube diameters (642-vertex cells: 13 ms).
+// Fails today (6 December 2026): with the paper's bending a cell's rim folded past its 30 degree
+// limit after 41 ms; with the physiological preset's Helfrich bending and local area since, the
+// flow ran 140 ms (23 D) but at 1.34 x Pries' viscosity (docs/validation.md, suspensions).
 #include <gtest/gtest.h>
 
 #include <cmath>
