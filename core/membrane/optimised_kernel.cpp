@@ -1,9 +1,12 @@
-// The optimised kernel ("optimised", the default): the six forces of force_terms.hpp, fused.
+// The optimised kernel ("optimised", the default): the six forces of force_terms.hpp, the
+// whole-membrane area, Helfrich bending and the local area, fused.
 // One evaluation is one OpenMP parallel region:
 //  1. one vectorised pass over the edges measures each hinge ONCE (length, unit axis, both
 //     triangle normals, dihedral angle theta) and writes its four pattern vectors and scalars:
-//     all that bend, area_difference, total_curvature and link need; one over the triangles
-//     writes their normals, area forces and volume shares (optimised_passes.cpp);
+//     all that bend, area_difference, total_curvature, link and helfrich need; one over the
+//     triangles writes their normals, area forces, area gradients and volume shares
+//     (optimised_passes.cpp); with helfrich, one over the vertices then gathers each ring's
+//     l theta and areas into the vertex's Helfrich loads;
 //  2. every thread reduces the cell sums (V, DeltaA, C) over fixed blocks of elements, in the same
 //     order, checks every limit and turns the cell-level deviations into three coefficients;
 //  3. one vectorised pass turns the patterns and coefficients into one force per slot (an
@@ -92,8 +95,10 @@ FusedConstants make_constants(const MembraneModel& model, const FusedDistributio
   FusedConstants constants{
       .enabled = {},
       .angle_terms = false,
+      // total_area, helfrich and local_area are harmonic: no limit, but NaN still fails.
       .tau = {p.tau_link, p.tau_bend_rad, p.tau_area, p.tau_volume, p.tau_area_difference,
-              p.tau_total_curvature, std::numeric_limits<double>::infinity()},
+              p.tau_total_curvature, std::numeric_limits<double>::infinity(),
+              std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()},
       // Energy stiffnesses (the terms' files): link (k_l kBT / p) L0_e; bend K_b of the gradient
       // form in both distributions; area (k_a kBT / L0) 6 A0 / P0; volume (k_v kBT / L0) V0 / g0;
       // cell terms sqrt 3 |S0| k kBT / L0.
@@ -114,12 +119,17 @@ FusedConstants make_constants(const MembraneModel& model, const FusedDistributio
                           std::sqrt(3.0) * total_curvature_pN *
                               reference.absolute_curvature_sum_um},
       .total_area_modulus_pN_per_um = p.total_area_modulus_uN_per_m,
+      .local_area_modulus_pN_per_um = p.local_area_modulus_uN_per_m,
+      .helfrich_modulus_pN_um = p.k_bend_kBT * p.thermal_energy_pN_um,
+      .area_gradients = false,
   };
   for (auto name : model.kernel_term_names()) {
     if (const auto term = fused_term_of(name)) constants.enabled[*term] = true;
   }
   constants.angle_terms = constants.enabled[kBend] || constants.enabled[kAreaDifference] ||
                           constants.enabled[kTotalCurvature];
+  constants.area_gradients = constants.enabled[kTotalArea] || constants.enabled[kLocalArea] ||
+                             constants.enabled[kHelfrich];
   return constants;
 }
 
@@ -149,6 +159,15 @@ CornerStencils make_corner_stencils(const MembraneModel& model) {
     corners.area_forces_per_um.push_back(3.0 / reference.triangle_perimeters_um[t]);
   }
   return corners;
+}
+
+VertexStencils make_vertex_stencils(const MembraneModel& model) {
+  const auto& topology = model.topology();
+  return {.edge_offsets = topology.vertex_edge_offsets(),
+          .edges = topology.vertex_edges(),
+          .triangle_offsets = topology.vertex_triangle_offsets(),
+          .triangles = topology.vertex_triangles(),
+          .reference_mean_curvatures_per_um = model.reference().vertex_mean_curvatures_per_um};
 }
 
 // Slots of the gather, role-major so that each role's slots are contiguous per vertex:
@@ -185,6 +204,7 @@ class OptimisedKernel final : public MembraneKernel {
         constants_(make_constants(model, *distribution_)),
         hinges_(make_hinge_stencils(model)),
         corners_(make_corner_stencils(model)),
+        vertices_(make_vertex_stencils(model)),
         incidence_(make_incidence(model)) {
     // The term factories validate the parameters and the reference (e.g. DeltaA0 near zero):
     // this kernel accepts exactly what the reference kernel accepts.
@@ -225,8 +245,19 @@ class OptimisedKernel final : public MembraneKernel {
     s.area_deviations.assign(triangles, 0.0);
     s.volume_shares_um3.assign(triangles, 0.0);
     s.triangle_areas_um2.assign(triangles, 0.0);
-    if (constants_.enabled[kTotalArea]) {
+    if (constants_.area_gradients) {
       for (auto& corner : s.corner_area_gradients_um) corner.assign_zero(triangles);
+    }
+    if (constants_.enabled[kHelfrich]) {
+      s.lengths_um.assign(edges, 0.0);
+      s.angles_rad.assign(edges, 0.0);
+      for (auto& role : s.angle_gradients_per_um) role.assign_zero(edges);
+      const auto vertices = vertices_.vertex_count();
+      for (auto* per_vertex : {&s.helfrich_curvature_loads_pN, &s.helfrich_area_loads_pN_per_um,
+                               &s.helfrich_energies_pN_um, &s.helfrich_departures_per_um}) {
+        per_vertex->assign(vertices, 0.0);
+      }
+      s.vertex_blocks.assign(block_count(vertices), VertexBlockSums{});
     }
     s.slot_forces_pN.assign_zero(4 * edges + 3 * triangles);
     s.edge_blocks.assign(block_count(edges), EdgeBlockSums{});
@@ -250,11 +281,13 @@ class OptimisedKernel final : public MembraneKernel {
     CellSummary summary;  // thread 0's, for after the region
     std::size_t capped = 0;
     std::ptrdiff_t first_non_finite = vertex_count;
-    // Three synchronisations: after step 1, after step 3a, and the end of the region (which also
-    // completes the reductions of the `nowait` gather).
+    // Three synchronisations (four with helfrich: after its vertex pass too): after step 1, after
+    // step 3a, and the end of the region (which also completes the reductions of the `nowait`
+    // gather).
 #pragma omp parallel
     {
       measure_elements(positions_xyz, scratch);
+      if (constants_.enabled[kHelfrich]) measure_vertices(scratch);
       // Every thread reduces the same block sums in the same order: the same summary on every
       // thread, with no thread waiting for another to publish it.
       const CellSummary own_summary = summarize(model, scratch);
@@ -323,6 +356,11 @@ class OptimisedKernel final : public MembraneKernel {
       edges.signed_curvature_um += block.signed_curvature_um;
       edges.absolute_curvature_um += block.absolute_curvature_um;
     }
+    double helfrich_max_abs_departure_per_um = 0.0;
+    for (const auto& block : scratch.vertex_blocks) {
+      helfrich_max_abs_departure_per_um = simd::max_magnitude(
+          helfrich_max_abs_departure_per_um, block.helfrich_max_abs_departure_per_um);
+    }
     TriangleBlockSums triangles;
     for (const auto& block : scratch.triangle_blocks) {
       triangles.area_max_abs_deviation =
@@ -334,10 +372,12 @@ class OptimisedKernel final : public MembraneKernel {
     summary.cell = cell_deviations(model.reference(), triangles.volume_um3, triangles.area_um2,
                                    edges.signed_curvature_um, edges.absolute_curvature_um);
     const auto& cell = summary.cell;
-    summary.max_abs_deviation = {edges.link_max_abs_deviation,     edges.bend_max_abs_deviation,
-                                 triangles.area_max_abs_deviation, std::abs(cell.volume),
-                                 std::abs(cell.area_difference),   std::abs(cell.total_curvature),
-                                 std::abs(cell.total_area)};
+    summary.max_abs_deviation = {
+        edges.link_max_abs_deviation,     edges.bend_max_abs_deviation,
+        triangles.area_max_abs_deviation, std::abs(cell.volume),
+        std::abs(cell.area_difference),   std::abs(cell.total_curvature),
+        std::abs(cell.total_area),        helfrich_max_abs_departure_per_um,
+        triangles.area_max_abs_deviation};
     for (std::size_t i = 0; i < enabled_terms_.size(); ++i) {
       const Term term = enabled_terms_[i];
       // `!(|d| < tau)` also catches NaN.
@@ -356,7 +396,9 @@ class OptimisedKernel final : public MembraneKernel {
                                  : 0.0,
         enabled[kTotalCurvature] ? constants_.total_curvature.coefficient(cell.total_curvature)
                                  : 0.0,
-        enabled[kTotalArea] ? -constants_.total_area_modulus_pN_per_um * cell.total_area : 0.0};
+        enabled[kTotalArea] ? -constants_.total_area_modulus_pN_per_um * cell.total_area : 0.0,
+        enabled[kHelfrich] ? 1.0 : 0.0,
+        enabled[kLocalArea] ? -constants_.local_area_modulus_pN_per_um : 0.0};
     return summary;
   }
 
@@ -376,17 +418,26 @@ class OptimisedKernel final : public MembraneKernel {
     }
   }
 
+  // Step 1b, inside the parallel region likewise: helfrich's per-vertex loads.
+  void measure_vertices(OptimisedScratch& scratch) const {
+    const auto vertex_blocks = static_cast<std::ptrdiff_t>(scratch.vertex_blocks.size());
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t b = 0; b < vertex_blocks; ++b) {
+      measure_vertex_block(constants_, vertices_, static_cast<std::size_t>(b), scratch);
+    }
+  }
+
   // Step 3a, inside the parallel region likewise.
   void weigh_slots(const SlotWeights& weights, OptimisedScratch& scratch) const {
     const auto edge_blocks = static_cast<std::ptrdiff_t>(scratch.edge_blocks.size());
     const auto triangle_blocks = static_cast<std::ptrdiff_t>(scratch.triangle_blocks.size());
 #pragma omp for schedule(static) nowait
     for (std::ptrdiff_t b = 0; b < edge_blocks; ++b) {
-      weigh_edge_block(weights, static_cast<std::size_t>(b), scratch);
+      weigh_edge_block(weights, hinges_, static_cast<std::size_t>(b), scratch);
     }
 #pragma omp for schedule(static)
     for (std::ptrdiff_t b = 0; b < triangle_blocks; ++b) {
-      weigh_triangle_block(weights, static_cast<std::size_t>(b), scratch);
+      weigh_triangle_block(weights, corners_, static_cast<std::size_t>(b), scratch);
     }
   }
 
@@ -462,6 +513,18 @@ class OptimisedKernel final : public MembraneKernel {
       case kTotalArea:
         return 0.5 * constants_.total_area_modulus_pN_per_um * reference.area_um2 *
                cell.total_area * cell.total_area;
+      case kHelfrich:
+        for (double vertex_energy_pN_um : scratch.helfrich_energies_pN_um) {
+          sum_pN_um += vertex_energy_pN_um;
+        }
+        return sum_pN_um;
+      case kLocalArea:
+        for (std::size_t t = 0; t < triangle_count(); ++t) {
+          const double deviation = scratch.area_deviations[t];
+          sum_pN_um += 0.5 * constants_.local_area_modulus_pN_per_um *
+                       reference.triangle_areas_um2[t] * deviation * deviation;
+        }
+        return sum_pN_um;
       case kTermCount:
         break;
     }
@@ -480,7 +543,8 @@ class OptimisedKernel final : public MembraneKernel {
       }
     };
     const std::array<double, kTermCount> cell_deviation = {
-        0.0, 0.0, 0.0, cell.volume, cell.area_difference, cell.total_curvature, cell.total_area};
+        0.0, 0.0, 0.0, cell.volume, cell.area_difference, cell.total_curvature, cell.total_area,
+        0.0, 0.0};
     switch (term) {
       case kLink:
         first_beyond("edge", scratch.link_deviations);
@@ -489,7 +553,11 @@ class OptimisedKernel final : public MembraneKernel {
         first_beyond("edge", scratch.bend_deviations_rad);
         break;
       case kArea:
+      case kLocalArea:
         first_beyond("triangle", scratch.area_deviations);
+        break;
+      case kHelfrich:
+        first_beyond("vertex", scratch.helfrich_departures_per_um);
         break;
       case kTotalArea:
         fail_non_finite_total_area(cell.total_area);
@@ -503,6 +571,7 @@ class OptimisedKernel final : public MembraneKernel {
   FusedConstants constants_;
   HingeStencils hinges_;
   CornerStencils corners_;
+  VertexStencils vertices_;
   VertexGather incidence_;
   std::vector<Term> enabled_terms_;         // the fused terms, in registry order
   std::vector<std::size_t> fused_indices_;  // their entries in MembraneForces::terms

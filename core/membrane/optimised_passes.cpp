@@ -53,6 +53,25 @@ double gradient_cell_scale(double force_scale_pN) { return std::sqrt(3.0) / 2.0 
 double paper_bend_scale(double force_scale_pN, double) { return force_scale_pN; }
 double paper_cell_scale(double force_scale_pN) { return force_scale_pN; }
 
+// dtheta/dx by role into `out` where `on` is 1 (Bridson, Marino & Fedkiw 2003):
+// dtheta/dwing_k = -N_k l / |N_k|^2, and the ends follow from alpha_k = (wing_k - vertex0) . e /
+// l^2; axis = vertex1 - vertex0, N_k the triangles' normals of measure_edges.
+[[gnu::always_inline]] inline void store_angle_gradients(const std::array<XyzArrays, 4>& out,
+                                                         std::int32_t e, Xyz vertex0, Xyz wing0,
+                                                         Xyz wing1, Xyz axis, Xyz normal0,
+                                                         Xyz normal1, double length,
+                                                         double inverse_length, double on) {
+  const Xyz wing0_gradient = (-length / dot(normal0, normal0)) * normal0;
+  const Xyz wing1_gradient = (-length / dot(normal1, normal1)) * normal1;
+  const double inverse_length_squared = inverse_length * inverse_length;
+  const double alpha0 = dot(wing0 - vertex0, axis) * inverse_length_squared;
+  const double alpha1 = dot(wing1 - vertex0, axis) * inverse_length_squared;
+  out[0].store_where(e, (alpha0 - 1.0) * wing0_gradient + (alpha1 - 1.0) * wing1_gradient, on);
+  out[1].store_where(e, (-alpha0) * wing0_gradient - alpha1 * wing1_gradient, on);
+  out[2].store_where(e, wing0_gradient, on);
+  out[3].store_where(e, wing1_gradient, on);
+}
+
 // The loop body uses only Xyz values and plain doubles, no structs of them: a struct would stay
 // in memory (OpenMP privatises it per lane) and keep the loop from vectorising.
 template <Pattern kPattern>
@@ -83,6 +102,12 @@ template <Pattern kPattern>
   const double patterns_on = constants.angle_terms ? 1.0 : 0.0;
   const ScaledLaw link = constants.link;
   const ScaledLaw bend = constants.bend;
+  const bool helfrich_on = constants.enabled[kHelfrich];
+  double* lengths = scratch.lengths_um.data();
+  double* angles = scratch.angles_rad.data();
+  const std::array<XyzArrays, 4> angle_gradients = {
+      arrays(scratch.angle_gradients_per_um[0]), arrays(scratch.angle_gradients_per_um[1]),
+      arrays(scratch.angle_gradients_per_um[2]), arrays(scratch.angle_gradients_per_um[3])};
 
 #pragma omp simd
   for (std::int32_t e = range.begin; e < range.end; ++e) {
@@ -101,16 +126,8 @@ template <Pattern kPattern>
         simd::atan2(dot(cross(normal0, normal1), axis) * inverse_length, dot(normal0, normal1));
 
     if constexpr (kPattern == Pattern::gradient) {
-      const Xyz wing0_gradient = (-length / dot(normal0, normal0)) * normal0;
-      const Xyz wing1_gradient = (-length / dot(normal1, normal1)) * normal1;
-      const double inverse_length_squared = inverse_length * inverse_length;
-      const double alpha0 = dot(wing0 - vertex0, axis) * inverse_length_squared;
-      const double alpha1 = dot(wing1 - vertex0, axis) * inverse_length_squared;
-      patterns[0].store_where(e, (alpha0 - 1.0) * wing0_gradient + (alpha1 - 1.0) * wing1_gradient,
-                              patterns_on);
-      patterns[1].store_where(e, (-alpha0) * wing0_gradient - alpha1 * wing1_gradient, patterns_on);
-      patterns[2].store_where(e, wing0_gradient, patterns_on);
-      patterns[3].store_where(e, wing1_gradient, patterns_on);
+      store_angle_gradients(patterns, e, vertex0, wing0, wing1, axis, normal0, normal1, length,
+                            inverse_length, patterns_on);
       angle_weights[e] = length;
       length_weights[e] = angle_rad;
     } else {
@@ -134,6 +151,12 @@ template <Pattern kPattern>
     link_coefficients[e] = simd::where(link_on, link.coefficient(link_deviation));
     bend_coefficients[e] = simd::where(bend_on, bend.coefficient(bend_deviation_rad));
     half_curvatures[e] = 0.5 * length * angle_rad;
+    if (helfrich_on) {  // loop-invariant: the compiler keeps two versions of the loop
+      lengths[e] = length;
+      angles[e] = angle_rad;
+      store_angle_gradients(angle_gradients, e, vertex0, wing0, wing1, axis, normal0, normal1,
+                            length, inverse_length, 1.0);
+    }
   }
 
   EdgeBlockSums sums;
@@ -167,19 +190,32 @@ constexpr FusedDistribution kFusedDistributions[] = {
 
 std::span<const FusedDistribution> fused_distribution_table() { return kFusedDistributions; }
 
-// F = -(a P_r + b g_r u) per role (OptimisedScratch), with g = (-1, +1, 0, 0).
-RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_edge_block(const SlotWeights& weights, std::size_t block,
-                                                    OptimisedScratch& scratch) {
-  const std::size_t edges = scratch.angle_signs.size();
-  const BlockRange range = block_range(block, edges);
-  std::array<const double*, 4> pattern_x;
-  std::array<const double*, 4> pattern_y;
-  std::array<const double*, 4> pattern_z;
-  for (std::size_t role = 0; role < 4; ++role) {
-    pattern_x[role] = scratch.hinge_patterns[role].x.data();
-    pattern_y[role] = scratch.hinge_patterns[role].y.data();
-    pattern_z[role] = scratch.hinge_patterns[role].z.data();
+// Component pointers of four (three) vector arrays, for loops that read them by element.
+template <std::size_t kCount>
+struct ComponentPointers {
+  std::array<const double*, kCount> x, y, z;
+  explicit ComponentPointers(const std::array<Vec3Arrays, kCount>& vectors) {
+    for (std::size_t i = 0; i < kCount; ++i) {
+      x[i] = vectors[i].x.data();
+      y[i] = vectors[i].y.data();
+      z[i] = vectors[i].z.data();
+    }
   }
+  Xyz at(std::size_t i, std::int32_t element) const {
+    return {x[i][element], y[i][element], z[i][element]};
+  }
+};
+
+// F = -(a P_r + b g_r u) per role (OptimisedScratch), with g = (-1, +1, 0, 0); with helfrich
+// also -(h l dtheta/dx_r) and b += h theta, h = kappa (u_0 + u_1) of the edge's ends
+// (helfrich_term.cpp).
+template <bool kWithHelfrich>
+[[gnu::always_inline]] inline void weigh_edges(const SlotWeights& weights,
+                                               const HingeStencils& hinges, BlockRange range,
+                                               OptimisedScratch& scratch) {
+  const std::size_t edges = scratch.angle_signs.size();
+  const ComponentPointers<4> patterns(scratch.hinge_patterns);
+  const ComponentPointers<4> angle_gradients(scratch.angle_gradients_per_um);
   const double* unit_x = scratch.unit_axes.x.data();
   const double* unit_y = scratch.unit_axes.y.data();
   const double* unit_z = scratch.unit_axes.z.data();
@@ -188,6 +224,10 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_edge_block(const SlotWeights& weights, 
   const double* angle_weights = scratch.angle_weights.data();
   const double* length_weights = scratch.length_weights.data();
   const double* angle_signs = scratch.angle_signs.data();
+  const auto* vertices = hinges.vertices.data();
+  const double* curvature_loads = scratch.helfrich_curvature_loads_pN.data();
+  const double* lengths = scratch.lengths_um.data();
+  const double* angles = scratch.angles_rad.data();
   const std::array<XyzArrays, 4> slots = {
       shifted(scratch.slot_forces_pN, 0), shifted(scratch.slot_forces_pN, edges),
       shifted(scratch.slot_forces_pN, 2 * edges), shifted(scratch.slot_forces_pN, 3 * edges)};
@@ -195,15 +235,25 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_edge_block(const SlotWeights& weights, 
   const double w_bend = weights[kBend];
   const double c_area_difference = weights[kAreaDifference];
   const double c_total_curvature = weights[kTotalCurvature];
+  const double w_helfrich = weights[kHelfrich];
 
 #pragma omp simd
   for (std::int32_t e = range.begin; e < range.end; ++e) {
     const double cell = c_area_difference + c_total_curvature * angle_signs[e];
     const double a = w_bend * bend_coefficients[e] + cell * angle_weights[e];
-    const double b = w_link * link_coefficients[e] + cell * length_weights[e];
+    double b = w_link * link_coefficients[e] + cell * length_weights[e];
+    double helfrich_a = 0.0;
+    if constexpr (kWithHelfrich) {
+      const double h =
+          w_helfrich * (curvature_loads[vertices[e][0]] + curvature_loads[vertices[e][1]]);
+      helfrich_a = h * lengths[e];
+      b += h * angles[e];
+    }
     const Xyz along_axis = b * Xyz{unit_x[e], unit_y[e], unit_z[e]};
     const auto push = [&](std::size_t role) {
-      return (-a) * Xyz{pattern_x[role][e], pattern_y[role][e], pattern_z[role][e]};
+      const Xyz pushed = (-a) * patterns.at(role, e);
+      if constexpr (kWithHelfrich) return pushed - helfrich_a * angle_gradients.at(role, e);
+      return pushed;
     };
     slots[0].store(e, push(0) + along_axis);
     slots[1].store(e, push(1) - along_axis);
@@ -212,24 +262,34 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_edge_block(const SlotWeights& weights, 
   }
 }
 
-// F = w_area A_k + c_v N (+ c_A G_k with total_area) per corner k.
-RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_triangle_block(const SlotWeights& weights,
-                                                        std::size_t block,
-                                                        OptimisedScratch& scratch) {
+RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_edge_block(const SlotWeights& weights,
+                                                    const HingeStencils& hinges, std::size_t block,
+                                                    OptimisedScratch& scratch) {
+  const BlockRange range = block_range(block, hinges.vertices.size());
+  if (weights[kHelfrich] != 0.0) {
+    weigh_edges<true>(weights, hinges, range, scratch);
+  } else {
+    weigh_edges<false>(weights, hinges, range, scratch);
+  }
+}
+
+// F = w_area A_k + c_v N per corner k, plus g_t G_k with the area gradients G_k, where
+// g_t = c_A (total_area) + c_L d_t (local_area, c_L = -K) - (lambda_a + lambda_b + lambda_c) / 3
+// (helfrich, lambda = dE/dA_v at the corners).
+template <bool kWithGradients, bool kWithHelfrich>
+[[gnu::always_inline]] inline void weigh_triangles(const SlotWeights& weights,
+                                                   const CornerStencils& stencils, BlockRange range,
+                                                   OptimisedScratch& scratch) {
   const std::size_t triangles = scratch.area_deviations.size();
   const std::size_t first_slot = 4 * scratch.angle_signs.size();
-  const BlockRange range = block_range(block, triangles);
   const double* normal_x = scratch.triangle_normals_um2.x.data();
   const double* normal_y = scratch.triangle_normals_um2.y.data();
   const double* normal_z = scratch.triangle_normals_um2.z.data();
-  std::array<const double*, 3> area_x;
-  std::array<const double*, 3> area_y;
-  std::array<const double*, 3> area_z;
-  for (std::size_t corner = 0; corner < 3; ++corner) {
-    area_x[corner] = scratch.corner_area_forces_pN[corner].x.data();
-    area_y[corner] = scratch.corner_area_forces_pN[corner].y.data();
-    area_z[corner] = scratch.corner_area_forces_pN[corner].z.data();
-  }
+  const ComponentPointers<3> area_forces(scratch.corner_area_forces_pN);
+  const ComponentPointers<3> gradients(scratch.corner_area_gradients_um);
+  const double* area_deviations = scratch.area_deviations.data();
+  const auto* corners = stencils.corners.data();
+  const double* area_loads = scratch.helfrich_area_loads_pN_per_um.data();
   const std::array<XyzArrays, 3> slots = {
       shifted(scratch.slot_forces_pN, first_slot),
       shifted(scratch.slot_forces_pN, first_slot + triangles),
@@ -237,32 +297,76 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_triangle_block(const SlotWeights& weigh
   const double w_area = weights[kArea];
   const double c_volume = weights[kVolume];
   const double c_total_area = weights[kTotalArea];
+  const double c_local_area = weights[kLocalArea];
+  const double w_helfrich = weights[kHelfrich];
 
-  if (c_total_area == 0.0) {  // total_area off (or at its reference area): no gradient arrays
-#pragma omp simd
-    for (std::int32_t t = range.begin; t < range.end; ++t) {
-      const Xyz volume = c_volume * Xyz{normal_x[t], normal_y[t], normal_z[t]};
-#pragma GCC unroll 3
-      for (std::size_t corner = 0; corner < 3; ++corner) {
-        slots[corner].store(
-            t, w_area * Xyz{area_x[corner][t], area_y[corner][t], area_z[corner][t]} + volume);
-      }
-    }
-    return;
-  }
-  std::array<XyzArrays, 3> gradients;
-  for (std::size_t corner = 0; corner < 3; ++corner) {
-    gradients[corner] = arrays(scratch.corner_area_gradients_um[corner]);
-  }
 #pragma omp simd
   for (std::int32_t t = range.begin; t < range.end; ++t) {
     const Xyz volume = c_volume * Xyz{normal_x[t], normal_y[t], normal_z[t]};
+    double gradient_weight = 0.0;
+    if constexpr (kWithGradients) {
+      gradient_weight = c_total_area + c_local_area * area_deviations[t];
+    }
+    if constexpr (kWithHelfrich) {
+      gradient_weight -=
+          w_helfrich *
+          (area_loads[corners[t][0]] + area_loads[corners[t][1]] + area_loads[corners[t][2]]) / 3.0;
+    }
 #pragma GCC unroll 3
     for (std::size_t corner = 0; corner < 3; ++corner) {
-      slots[corner].store(t, w_area * Xyz{area_x[corner][t], area_y[corner][t], area_z[corner][t]} +
-                                 volume + c_total_area * gradients[corner].load(t));
+      Xyz force = w_area * area_forces.at(corner, t) + volume;
+      if constexpr (kWithGradients) force = force + gradient_weight * gradients.at(corner, t);
+      slots[corner].store(t, force);
     }
   }
+}
+
+RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_triangle_block(const SlotWeights& weights,
+                                                        const CornerStencils& corners,
+                                                        std::size_t block,
+                                                        OptimisedScratch& scratch) {
+  const BlockRange range = block_range(block, corners.corners.size());
+  // Without the area-gradient terms (or with them at zero weight) the gradient arrays may not
+  // exist.
+  if (weights[kHelfrich] != 0.0) {
+    weigh_triangles<true, true>(weights, corners, range, scratch);
+  } else if (weights[kTotalArea] != 0.0 || weights[kLocalArea] != 0.0) {
+    weigh_triangles<true, false>(weights, corners, range, scratch);
+  } else {
+    weigh_triangles<false, false>(weights, corners, range, scratch);
+  }
+}
+
+// M_v = (1/2) sum of the ring's l theta / 2, A_v = (1/3) sum of the ring's areas; then, with
+// u = H - H0 and H = M / A (helfrich_term.cpp): kappa u, dE/dA_v = 2 kappa u (u - 2 H) and
+// E_v = 2 kappa u^2 A_v. Scalar: a ring has five to seven entries.
+void measure_vertex_block(const FusedConstants& constants, const VertexStencils& vertices,
+                          std::size_t block, OptimisedScratch& scratch) {
+  const BlockRange range = block_range(block, vertices.vertex_count());
+  const double kappa = constants.helfrich_modulus_pN_um;
+  VertexBlockSums sums;
+  for (std::int32_t v = range.begin; v < range.end; ++v) {
+    double half_curvature_sum_um = 0.0;
+    for (auto slot = vertices.edge_offsets[v]; slot < vertices.edge_offsets[v + 1]; ++slot) {
+      half_curvature_sum_um += scratch.half_curvatures_um[vertices.edges[slot]];
+    }
+    double area_sum_um2 = 0.0;
+    for (auto slot = vertices.triangle_offsets[v]; slot < vertices.triangle_offsets[v + 1];
+         ++slot) {
+      area_sum_um2 += scratch.triangle_areas_um2[vertices.triangles[slot]];
+    }
+    const double area_um2 = area_sum_um2 / 3.0;
+    const double mean_curvature_per_um = 0.5 * half_curvature_sum_um / area_um2;
+    const double departure = mean_curvature_per_um - vertices.reference_mean_curvatures_per_um[v];
+    scratch.helfrich_departures_per_um[v] = departure;
+    scratch.helfrich_curvature_loads_pN[v] = kappa * departure;
+    scratch.helfrich_area_loads_pN_per_um[v] =
+        2.0 * kappa * departure * (departure - 2.0 * mean_curvature_per_um);
+    scratch.helfrich_energies_pN_um[v] = 2.0 * kappa * departure * departure * area_um2;
+    sums.helfrich_max_abs_departure_per_um =
+        simd::max_magnitude(sums.helfrich_max_abs_departure_per_um, departure);
+  }
+  scratch.vertex_blocks[block] = sums;
 }
 
 // K_b = (k_b kBT / L0) h, h = (sqrt 3 / 2) L0 (bending_term.cpp).
@@ -288,9 +392,9 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void measure_triangle_block(const FusedConstants& 
   double* volume_shares = scratch.volume_shares_um3.data();
   double* triangle_areas = scratch.triangle_areas_um2.data();
   const double area_on = constants.enabled[kArea] ? 1.0 : 0.0;  // see measure_edges
-  const bool total_area_on = constants.enabled[kTotalArea];
+  const bool gradients_on = constants.area_gradients;
   std::array<XyzArrays, 3> gradients{};
-  if (total_area_on) {
+  if (gradients_on) {
     for (std::size_t corner = 0; corner < 3; ++corner) {
       gradients[corner] = arrays(scratch.corner_area_gradients_um[corner]);
     }
@@ -318,7 +422,7 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void measure_triangle_block(const FusedConstants& 
     corner_forces[0].store(t, cross(scaled_normal, c - b));
     corner_forces[1].store(t, cross(scaled_normal, a - c));
     corner_forces[2].store(t, cross(scaled_normal, b - a));
-    if (total_area_on) {  // loop-invariant: the compiler keeps two versions of the loop
+    if (gradients_on) {  // loop-invariant: the compiler keeps two versions of the loop
       const Xyz half_unit_normal = (0.5 / normal_length) * normal;
       gradients[0].store(t, cross(half_unit_normal, c - b));
       gradients[1].store(t, cross(half_unit_normal, a - c));

@@ -31,10 +31,13 @@ enum Term : std::size_t {
   kAreaDifference,
   kTotalCurvature,
   kTotalArea,
+  kHelfrich,
+  kLocalArea,
   kTermCount
 };
 constexpr std::array<std::string_view, kTermCount> kTermNames = {
-    "link", "bend", "area", "volume", "area_difference", "total_curvature", "total_area"};
+    "link",       "bend",     "area",      "volume", "area_difference", "total_curvature",
+    "total_area", "helfrich", "local_area"};
 
 // A term's force law and scales. An element's force coefficient is force_scale slope(d) (what
 // it multiplies is said where it is used); its energy is energy_scale (times a per-element
@@ -58,6 +61,12 @@ struct FusedConstants {
   ScaledLaw total_curvature;  // c_tc = coefficient
   // total_area: c_A = -K d times each corner's dA/dx (harmonic, no law); K in pN/um.
   double total_area_modulus_pN_per_um;
+  // local_area: -K d_t times each corner's dA_t/dx (harmonic); K in pN/um.
+  double local_area_modulus_pN_per_um;
+  // helfrich: kappa, pN um (helfrich_term.cpp).
+  double helfrich_modulus_pN_um;
+  // total_area, local_area or helfrich: the corners' area gradients are needed.
+  bool area_gradients;
 };
 
 // Per-element reference data, structure of arrays (inverses: multiplications in the passes).
@@ -76,6 +85,16 @@ struct CornerStencils {
   std::vector<double> area_forces_per_um;  // 3 / P0 (area_term.cpp)
 };
 
+// The vertices' rings (mesh::MeshTopology's) and reference mean curvatures H0_v, for helfrich.
+struct VertexStencils {
+  std::vector<std::int32_t> edge_offsets;  // vertex v's edges: edges[edge_offsets[v] ..]
+  std::vector<std::int32_t> edges;
+  std::vector<std::int32_t> triangle_offsets;
+  std::vector<std::int32_t> triangles;
+  std::vector<double> reference_mean_curvatures_per_um;
+  std::size_t vertex_count() const { return edge_offsets.size() - 1; }
+};
+
 // Step 1: one pass over block `block` of the edges (or triangles); positions_xyz is x, y, z per
 // vertex.
 using EdgeBlockPass = void (*)(const FusedConstants& constants, const HingeStencils& hinges,
@@ -85,15 +104,22 @@ void measure_triangle_block(const FusedConstants& constants, const CornerStencil
                             std::size_t block, const double* positions_xyz,
                             OptimisedScratch& scratch);
 
+// Step 1b, after step 1 and only with helfrich: each vertex of block `block` gathers its ring's
+// l theta and areas into M_v and A_v and writes its Helfrich loads and energy.
+void measure_vertex_block(const FusedConstants& constants, const VertexStencils& vertices,
+                          std::size_t block, OptimisedScratch& scratch);
+
 // The weight of each term in a force: 1 for link, bend and area (their coefficients are in the
-// scratch already), the cell coefficients c_v, c_ad, c_tc, c_A for the others; 0 for a term left
-// out.
+// scratch already), the cell coefficients c_v, c_ad, c_tc, c_A for the cell terms, 1 for helfrich
+// and local_area when enabled; 0 for a term left out.
 using SlotWeights = std::array<double, kTermCount>;
 
 // Step 3a: the force of every slot of block `block` of the edges (or triangles) for `weights`,
-// into OptimisedScratch::slot_forces_pN.
-void weigh_edge_block(const SlotWeights& weights, std::size_t block, OptimisedScratch& scratch);
-void weigh_triangle_block(const SlotWeights& weights, std::size_t block, OptimisedScratch& scratch);
+// into OptimisedScratch::slot_forces_pN. The stencils give the elements' vertices (helfrich).
+void weigh_edge_block(const SlotWeights& weights, const HingeStencils& hinges, std::size_t block,
+                      OptimisedScratch& scratch);
+void weigh_triangle_block(const SlotWeights& weights, const CornerStencils& corners,
+                          std::size_t block, OptimisedScratch& scratch);
 
 // One distribution of the angle terms as the optimised kernel needs it, by the names of
 // hinge.cpp's table: its edge pass and the scales of a (bend) and c (cell terms) from k kBT / L0.

@@ -34,6 +34,9 @@ struct EdgeBlockSums {
   double signed_curvature_um = 0.0;    // sum of l theta / 2
   double absolute_curvature_um = 0.0;  // sum of l |theta| / 2
 };
+struct VertexBlockSums {
+  double helfrich_max_abs_departure_per_um = 0.0;  // max |H_v - H0_v|
+};
 struct TriangleBlockSums {
   double area_max_abs_deviation = 0.0;
   double volume_um3 = 0.0;
@@ -55,6 +58,16 @@ struct OptimisedScratch {
   std::vector<double> link_deviations;
   std::vector<double> bend_deviations_rad;
   std::vector<double> half_curvatures_um;  // l theta / 2
+  // Only with helfrich: l, theta and dtheta/dx by role (the exact gradient, whatever the
+  // distribution of the other angle terms).
+  std::vector<double> lengths_um;
+  std::vector<double> angles_rad;
+  std::array<Vec3Arrays, 4> angle_gradients_per_um;
+  // Per vertex, only with helfrich: kappa (H_v - H0_v) (half of dE/dM_v), dE/dA_v and the energy.
+  std::vector<double> helfrich_curvature_loads_pN;
+  std::vector<double> helfrich_area_loads_pN_per_um;
+  std::vector<double> helfrich_energies_pN_um;
+  std::vector<double> helfrich_departures_per_um;
   // Per triangle: the area force on each corner, (b - a) x (c - a) (twice the area vector; the
   // volume force of a vertex is c_v times the sum over its triangles), and the volume shares.
   std::array<Vec3Arrays, 3> corner_area_forces_pN;
@@ -62,7 +75,8 @@ struct OptimisedScratch {
   std::vector<double> area_deviations;
   std::vector<double> volume_shares_um3;
   std::vector<double> triangle_areas_um2;
-  // Per triangle, only with total_area enabled: dA/dx of each corner, (1/2) n x (opposite edge).
+  // Per triangle, only with total_area, local_area or helfrich: dA/dx of each corner,
+  // (1/2) n x (opposite edge).
   std::array<Vec3Arrays, 3> corner_area_gradients_um;
   // The force of every slot for the current weights: hinge slot r E + e (role r of edge e), then
   // corner slot 4 E + k T + t (corner k of triangle t). A vertex's force is the sum of its slots.
@@ -70,6 +84,7 @@ struct OptimisedScratch {
 
   std::vector<EdgeBlockSums> edge_blocks;
   std::vector<TriangleBlockSums> triangle_blocks;
+  std::vector<VertexBlockSums> vertex_blocks;  // only with helfrich
 };
 
 }  // namespace rbcsim::membrane

@@ -148,32 +148,6 @@ TEST(HelfrichTerm, ScaledSphereFollowsTheContinuumEnergyAndPullsBack) {
   EXPECT_LT(at_rest.term("helfrich").energy_pN_um, 1e-20);
 }
 
-// The physiological terms with both new ones, in both kernels: the optimised one runs helfrich
-// and local_area beside its fused terms, so those two agree bit for bit and the totals to
-// round-off (the fused terms' own agreement is kernel_equivalence_test.cpp's).
-TEST(HelfrichTerm, RunsBesideTheFusedTermsInTheOptimisedKernel) {
-  const auto mesh = shapes::ellipsoid(3, Vec3(4.0, 3.0, 2.0));
-  std::vector<Vec3> positions = mesh.positions_um;
-  for (auto& p : positions) p = p.cwiseProduct(Vec3(1.02, 0.99, 0.98));
-  const auto compute = [&](const char* kernel) {
-    auto parameters = only({"link", "helfrich", "area", "volume", "area_difference",
-                            "total_curvature", "total_area", "local_area"});
-    parameters.kernel = kernel;
-    return shapes::forces_at(MembraneModel(mesh, parameters), positions);
-  };
-  const auto reference = compute("reference");
-  const auto optimised = compute("optimised");
-  for (const char* term : {"helfrich", "local_area"}) {
-    EXPECT_EQ(optimised.term(term).forces_pN, reference.term(term).forces_pN) << term;
-    EXPECT_EQ(optimised.term(term).energy_pN_um, reference.term(term).energy_pN_um) << term;
-  }
-  double largest_pN = 0.0;
-  for (const auto& f : reference.total_pN) largest_pN = std::max(largest_pN, f.norm());
-  for (std::size_t v = 0; v < positions.size(); ++v) {
-    EXPECT_NEAR((optimised.total_pN[v] - reference.total_pN[v]).norm(), 0.0, 1e-12 * largest_pN);
-  }
-}
-
 // Uniform dilation x -> (1 + eps) x of any closed mesh: A = (1 + eps)^2 A0 exactly, so
 // d = (1 + eps)^2 - 1 and E = K A0 d^2 / 2; A is homogeneous of degree 2 in the positions, so
 // (Euler) sum_i x_i . dA/dx_i = 2 A and the virial sum_i x_i . F_i = -2 K d A. Both kernels.

@@ -29,12 +29,13 @@ using rbcsim::membrane::MembraneModel;
 using rbcsim::membrane::MembraneParameters;
 namespace shapes = rbcsim::membrane_test;
 
-// Bit i: the i-th term the optimised kernel fuses (the paper's six and total_area).
+// Bit i: the i-th term the optimised kernel fuses (the paper's six, total_area, helfrich and
+// local_area).
 const unsigned kAllTerms = (1u << rbcsim::membrane::fused_force_term_names().size()) - 1u;
 
 struct EquivalenceShape {
   shapes::NamedShape shape;
-  bool every_subset;  // all 64 term subsets, or only each term alone and all six
+  bool every_subset;  // every subset of the fused terms, or only each term alone and all of them
 };
 
 // Levels 0 and 2 have a last block of elements shorter than the others (30 edges; 480 edges and
@@ -67,7 +68,7 @@ std::vector<unsigned> subsets_of(const EquivalenceShape& shape) {
   if (shape.every_subset) {
     for (unsigned mask = 0; mask <= kAllTerms; ++mask) masks.push_back(mask);
   } else {
-    for (unsigned bit = 0; bit < 6; ++bit) masks.push_back(1u << bit);
+    for (unsigned bit = 0; (1u << bit) <= kAllTerms; ++bit) masks.push_back(1u << bit);
     masks.push_back(kAllTerms);
   }
   return masks;
