@@ -16,7 +16,8 @@
 //
 // Fails today (6 December 2026): with the paper's bending a cell's rim folded past its 30 degree
 // limit after 41 ms; with the physiological preset's Helfrich bending and local area since, the
-// flow ran 140 ms (23 D) but at 1.34 x Pries' viscosity (docs/validation.md, suspensions).
+// flow ran 141.9 ms (23.5 D) at 1.34 x Pries' viscosity, then a triangle drifting finer than the
+// lattice reached the paper's area limit (docs/validation.md, suspensions).
 #include <gtest/gtest.h>
 
 #include <cmath>
