@@ -131,6 +131,10 @@ membrane::EdgeFrictionParameters Cell::friction_lu(const LatticeFrame& frame) co
           friction.tangential_pN_s_per_um * per_pN_s_per_um};
 }
 
+LatestForce Cell::latest_force(const std::array<double, 3>& body_force_lu) const {
+  return {forces_lu_, Vec3(body_force_lu[0], body_force_lu[1], body_force_lu[2])};
+}
+
 ImplicitFrictionSettings Cell::friction_settings() const {
   return {.relative_tolerance = model_.parameters().viscosity_solve_tolerance};
 }
@@ -143,7 +147,8 @@ void Cell::solve_membrane_friction(const lattice::FluidSolver& fluid, const Latt
   const auto dt_steps = static_cast<double>(time_step - last_friction_step_);
   friction_iterations_ = friction_.solve(
       stencil_, positions_lu_, membrane::EdgeNetwork::of(model_.topology()), friction_lu(frame),
-      dt_steps, fluid, membrane_velocities_lu_, friction_settings());
+      dt_steps, fluid, latest_force(fluid.parameters().body_force), membrane_velocities_lu_,
+      friction_settings());
   last_friction_step_ = time_step;
   friction_applied_ = true;
 }
@@ -155,11 +160,13 @@ std::span<const std::size_t> Cell::prepare_membrane_friction() {
 
 void Cell::solve_membrane_friction_with(std::span<const double> density,
                                         std::span<const Vec3> momentum_lu,
+                                        const std::array<double, 3>& body_force_lu,
                                         const LatticeFrame& frame, std::size_t time_step) {
   const auto dt_steps = static_cast<double>(time_step - last_friction_step_);
   friction_iterations_ = friction_.solve_with_moments(
       positions_lu_, membrane::EdgeNetwork::of(model_.topology()), friction_lu(frame), dt_steps,
-      density, momentum_lu, membrane_velocities_lu_, friction_settings());
+      density, momentum_lu, latest_force(body_force_lu), membrane_velocities_lu_,
+      friction_settings());
   last_friction_step_ = time_step;
   friction_applied_ = true;
 }

@@ -7,6 +7,7 @@
 // cell's shape and distance travelled stay continuous.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -105,15 +106,17 @@ class Cell {
   // The same step in parts, for the distributed lattice, where the nodes under a cell lie on
   // several processes (CoupledSimulation): prepare_membrane_friction() gives the nodes the solve
   // acts on (global indices, sorted); solve_membrane_friction_with() solves from their
-  // pre-collision density and momentum as solve_membrane_friction() would from the fluid;
+  // pre-collision density and momentum (and the fluid's body force) as
+  // solve_membrane_friction() would from the fluid;
   // append_friction_solution() and adopt_friction_solution() (after prepare_membrane_friction()
   // on the copy) make a copy of the cell on another process hold that solve, bit for bit;
   // membrane_friction_momentum() is the momentum to add per node of the solve. Throws as
   // solve_membrane_friction and ImplicitMembraneFriction::adopt_solution.
   std::span<const std::size_t> prepare_membrane_friction();
   void solve_membrane_friction_with(std::span<const double> density,
-                                    std::span<const Vec3> momentum_lu, const LatticeFrame& frame,
-                                    std::size_t time_step);
+                                    std::span<const Vec3> momentum_lu,
+                                    const std::array<double, 3>& body_force_lu,
+                                    const LatticeFrame& frame, std::size_t time_step);
   void append_friction_solution(std::vector<double>& values) const;
   std::span<const double> adopt_friction_solution(std::span<const double> values,
                                                   std::size_t time_step);
@@ -157,6 +160,8 @@ class Cell {
   // The membrane's friction coefficients in lattice force per lattice velocity.
   membrane::EdgeFrictionParameters friction_lu(const LatticeFrame& frame) const;
   ImplicitFrictionSettings friction_settings() const;
+  // The force of the fluid's latest collision as this cell spread it, plus the body force.
+  LatestForce latest_force(const std::array<double, 3>& body_force_lu) const;
 };
 
 }  // namespace rbcsim::coupling

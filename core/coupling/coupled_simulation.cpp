@@ -495,8 +495,9 @@ void CoupledSimulation::apply_distributed_membrane_friction() {
     momentum[k].at(n) = Vec3(moments[i + 3], moments[i + 4], moments[i + 5]);
   }
   const std::size_t step = time_step_ + 1;
+  const auto& body_force = distributed_->local().parameters().body_force;
   const auto solve = [&](std::size_t k) {
-    cells_[k].solve_membrane_friction_with(density[k], momentum[k], frame_, step);
+    cells_[k].solve_membrane_friction_with(density[k], momentum[k], body_force, frame_, step);
   };
   std::vector<std::size_t> owned;
   std::vector<std::size_t> copies;

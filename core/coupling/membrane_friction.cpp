@@ -86,15 +86,13 @@ void ImplicitMembraneFriction::prepare(const ibm::InterpolationStencil& stencil)
   if (!nodes_.empty()) node_slot_offsets_.push_back(static_cast<std::uint32_t>(slot_count));
 }
 
-std::size_t ImplicitMembraneFriction::apply(const ibm::InterpolationStencil& stencil,
-                                            std::span<const Vec3> positions_lu,
-                                            const membrane::EdgeNetwork& network,
-                                            const membrane::EdgeFrictionParameters& friction_lu,
-                                            double dt_steps, lattice::FluidSolver& fluid,
-                                            std::span<Vec3> membrane_velocities_lu,
-                                            const ImplicitFrictionSettings& settings) {
+std::size_t ImplicitMembraneFriction::apply(
+    const ibm::InterpolationStencil& stencil, std::span<const Vec3> positions_lu,
+    const membrane::EdgeNetwork& network, const membrane::EdgeFrictionParameters& friction_lu,
+    double dt_steps, lattice::FluidSolver& fluid, const LatestForce& latest_force,
+    std::span<Vec3> membrane_velocities_lu, const ImplicitFrictionSettings& settings) {
   const std::size_t iterations = solve(stencil, positions_lu, network, friction_lu, dt_steps, fluid,
-                                       membrane_velocities_lu, settings);
+                                       latest_force, membrane_velocities_lu, settings);
   add_momentum_to(fluid);
   return iterations;
 }
@@ -132,13 +130,11 @@ void ImplicitMembraneFriction::restore_state(StateArchive& archive, const std::s
   archive.take(prefix + "friction_correction_lu", previous_correction_);
 }
 
-std::size_t ImplicitMembraneFriction::solve(const ibm::InterpolationStencil& stencil,
-                                            std::span<const Vec3> positions_lu,
-                                            const membrane::EdgeNetwork& network,
-                                            const membrane::EdgeFrictionParameters& friction_lu,
-                                            double dt_steps, const lattice::FluidSolver& fluid,
-                                            std::span<Vec3> membrane_velocities_lu,
-                                            const ImplicitFrictionSettings& settings) {
+std::size_t ImplicitMembraneFriction::solve(
+    const ibm::InterpolationStencil& stencil, std::span<const Vec3> positions_lu,
+    const membrane::EdgeNetwork& network, const membrane::EdgeFrictionParameters& friction_lu,
+    double dt_steps, const lattice::FluidSolver& fluid, const LatestForce& latest_force,
+    std::span<Vec3> membrane_velocities_lu, const ImplicitFrictionSettings& settings) {
   prepare(stencil);
   // The fluid as the next collision will find it (after streaming, before the next force): the
   // friction must act on that state, not on the latest collision's velocity, which streaming
@@ -147,7 +143,7 @@ std::size_t ImplicitMembraneFriction::solve(const ibm::InterpolationStencil& ste
   std::vector<Vec3> momentum_lu(nodes_.size());
   fluid.pre_collision_moments(nodes_, density, momentum_lu);
   return solve_with_moments(positions_lu, network, friction_lu, dt_steps, density, momentum_lu,
-                            membrane_velocities_lu, settings);
+                            latest_force, membrane_velocities_lu, settings);
 }
 
 void ImplicitMembraneFriction::append_solution(std::vector<double>& values) const {
@@ -178,20 +174,22 @@ std::size_t ImplicitMembraneFriction::solve_with_moments(
     std::span<const Vec3> positions_lu, const membrane::EdgeNetwork& network,
     const membrane::EdgeFrictionParameters& friction_lu, double dt_steps,
     std::span<const double> density, std::span<const Vec3> momentum_lu,
-    std::span<Vec3> membrane_velocities_lu, const ImplicitFrictionSettings& settings) {
+    const LatestForce& latest_force, std::span<Vec3> membrane_velocities_lu,
+    const ImplicitFrictionSettings& settings) {
   const std::size_t node_count = nodes_.size();
   const std::size_t vertex_count = slot_offsets_.size() - 1;
   if (density.size() != node_count || momentum_lu.size() != node_count ||
-      positions_lu.size() != vertex_count) {
+      positions_lu.size() != vertex_count ||
+      !(latest_force.vertex_forces_lu.empty() ||
+        latest_force.vertex_forces_lu.size() == vertex_count)) {
     throw std::invalid_argument("ImplicitMembraneFriction::solve_with_moments: moments of " +
                                 std::to_string(density.size()) + " nodes for " +
                                 std::to_string(node_count) + ", " +
-                                std::to_string(positions_lu.size()) + " positions for " +
-                                std::to_string(vertex_count) + " vertices");
+                                std::to_string(positions_lu.size()) + " positions and " +
+                                std::to_string(latest_force.vertex_forces_lu.size()) +
+                                " forces for " + std::to_string(vertex_count) + " vertices");
   }
   const auto axes = membrane::edge_axes(positions_lu, network);
-  std::vector<Vec3> fluid_velocity(momentum_lu.begin(), momentum_lu.end());
-  for (std::size_t k = 0; k < node_count; ++k) fluid_velocity[k] /= density[k];
   // S x (nodes -> vertices), in slot order.
   auto interpolate = [&](std::span<const Vec3> x, std::span<Vec3> out) {
     for (std::size_t v = 0; v < vertex_count; ++v) {
@@ -213,6 +211,15 @@ std::size_t ImplicitMembraneFriction::solve_with_moments(
   auto spread = [&](std::span<const Vec3> y, std::span<Vec3> out) {
     for (std::size_t k = 0; k < node_count; ++k) out[k] = spread_at(y, k);
   };
+  // u = (m + F/2) / rho, Guo's velocity of the next collision with the latest force (header).
+  std::vector<Vec3> fluid_velocity(node_count);
+  for (std::size_t k = 0; k < node_count; ++k) {
+    Vec3 force = latest_force.body_force_lu;
+    if (!latest_force.vertex_forces_lu.empty()) {
+      force += spread_at(latest_force.vertex_forces_lu, k);
+    }
+    fluid_velocity[k] = (momentum_lu[k] + 0.5 * force) / density[k];
+  }
   std::vector<Vec3> vertex_values(vertex_count), resistance(vertex_count);
   // A x = rho x + dt S^T Gamma S x.
   auto apply_operator = [&](std::span<const Vec3> x, std::span<Vec3> out) {

@@ -9,7 +9,12 @@
 // vertices (S^T its spreading), Gamma the friction operator of the membrane's edges at the current
 // positions, dt in lattice steps. The membrane then moves with S u', the fluid keeps no slip, the
 // momentum exchanged, rho (u' - u) = -dt S^T Gamma S u', sums to zero, and the kinetic energy can
-// only fall. Conjugate gradients on the nodes (3x3 block-diagonal preconditioner), serial, sums in
+// only fall. u is the velocity the next collision will see: Guo's (m + F/2) / rho of the
+// populations after streaming, with F, not known until the next spread, taken as the force of the
+// collision just made (LatestForce). Without F/2 the membrane moves F/(2 rho) behind the fluid at
+// every solve, and a cell whose volume term pushes outwards creeps inwards, the faster the more it
+// has lost (a physiological cell in shear, solved every step, lost 10 % of its volume in 13 000
+// steps). Conjugate gradients on the nodes (3x3 block-diagonal preconditioner), serial, sums in
 // a fixed order. Each solve starts from u plus the previous solve's correction u' - u at the nodes
 // both share (the friction's correction changes little from one step to the next: in a 10 um tube
 // run 102-109 iterations instead of 260 per solve), converging to the same tolerance, relative to
@@ -38,13 +43,23 @@ struct ImplicitFrictionSettings {
   std::size_t max_iterations = 1000;
 };
 
+// The force density of the fluid's latest collision as the cell sees it, in lattice units: its
+// own vertex forces (one per stencil point, spread by the stencil the solve uses; empty: none) and
+// the uniform body force. Other cells' forces at shared nodes are not included (they meet this
+// cell's solve a step late, as their friction does).
+struct LatestForce {
+  std::span<const Vec3> vertex_forces_lu;
+  Vec3 body_force_lu = Vec3::Zero();
+};
+
 class ImplicitMembraneFriction {
  public:
   // One step over `dt_steps` lattice steps: solve, then add_momentum_to.
   std::size_t apply(const ibm::InterpolationStencil& stencil, std::span<const Vec3> positions_lu,
                     const membrane::EdgeNetwork& network,
                     const membrane::EdgeFrictionParameters& friction_lu, double dt_steps,
-                    lattice::FluidSolver& fluid, std::span<Vec3> membrane_velocities_lu,
+                    lattice::FluidSolver& fluid, const LatestForce& latest_force,
+                    std::span<Vec3> membrane_velocities_lu,
                     const ImplicitFrictionSettings& settings = {});
 
   // Solves for u' on the stencil's nodes of `fluid` (its populations in natural layout), writes
@@ -55,7 +70,8 @@ class ImplicitMembraneFriction {
   std::size_t solve(const ibm::InterpolationStencil& stencil, std::span<const Vec3> positions_lu,
                     const membrane::EdgeNetwork& network,
                     const membrane::EdgeFrictionParameters& friction_lu, double dt_steps,
-                    const lattice::FluidSolver& fluid, std::span<Vec3> membrane_velocities_lu,
+                    const lattice::FluidSolver& fluid, const LatestForce& latest_force,
+                    std::span<Vec3> membrane_velocities_lu,
                     const ImplicitFrictionSettings& settings = {});
   // Adds the latest solve's momentum to `fluid` (FluidSolver::add_momentum).
   void add_momentum_to(lattice::FluidSolver& fluid) const;
@@ -70,7 +86,7 @@ class ImplicitMembraneFriction {
                                  const membrane::EdgeNetwork& network,
                                  const membrane::EdgeFrictionParameters& friction_lu,
                                  double dt_steps, std::span<const double> density,
-                                 std::span<const Vec3> momentum_lu,
+                                 std::span<const Vec3> momentum_lu, const LatestForce& latest_force,
                                  std::span<Vec3> membrane_velocities_lu,
                                  const ImplicitFrictionSettings& settings = {});
   // The latest solve's momentum per node of nodes() (lattice units, rho u), to add to the fluid.
