@@ -161,15 +161,6 @@ CornerStencils make_corner_stencils(const MembraneModel& model) {
   return corners;
 }
 
-VertexStencils make_vertex_stencils(const MembraneModel& model) {
-  const auto& topology = model.topology();
-  return {.edge_offsets = topology.vertex_edge_offsets(),
-          .edges = topology.vertex_edges(),
-          .triangle_offsets = topology.vertex_triangle_offsets(),
-          .triangles = topology.vertex_triangles(),
-          .reference_mean_curvatures_per_um = model.reference().vertex_mean_curvatures_per_um};
-}
-
 // Slots of the gather, role-major so that each role's slots are contiguous per vertex:
 // hinge slot r E + e (role r of edge e), then corner slot 4 E + k T + t (corner k of triangle t).
 VertexGather make_incidence(const MembraneModel& model) {
@@ -204,7 +195,6 @@ class OptimisedKernel final : public MembraneKernel {
         constants_(make_constants(model, *distribution_)),
         hinges_(make_hinge_stencils(model)),
         corners_(make_corner_stencils(model)),
-        vertices_(make_vertex_stencils(model)),
         incidence_(make_incidence(model)) {
     // The term factories validate the parameters and the reference (e.g. DeltaA0 near zero):
     // this kernel accepts exactly what the reference kernel accepts.
@@ -252,7 +242,7 @@ class OptimisedKernel final : public MembraneKernel {
       s.lengths_um.assign(edges, 0.0);
       s.angles_rad.assign(edges, 0.0);
       for (auto& role : s.angle_gradients_per_um) role.assign_zero(edges);
-      const auto vertices = vertices_.vertex_count();
+      const auto vertices = model.vertex_count();
       for (auto* per_vertex : {&s.helfrich_curvature_loads_pN, &s.helfrich_area_loads_pN_per_um,
                                &s.helfrich_energies_pN_um, &s.helfrich_departures_per_um}) {
         per_vertex->assign(vertices, 0.0);
@@ -287,7 +277,7 @@ class OptimisedKernel final : public MembraneKernel {
 #pragma omp parallel
     {
       measure_elements(positions_xyz, scratch);
-      if (constants_.enabled[kHelfrich]) measure_vertices(scratch);
+      if (constants_.enabled[kHelfrich]) measure_vertices(model, scratch);
       // Every thread reduces the same block sums in the same order: the same summary on every
       // thread, with no thread waiting for another to publish it.
       const CellSummary own_summary = summarize(model, scratch);
@@ -419,11 +409,13 @@ class OptimisedKernel final : public MembraneKernel {
   }
 
   // Step 1b, inside the parallel region likewise: helfrich's per-vertex loads.
-  void measure_vertices(OptimisedScratch& scratch) const {
+  void measure_vertices(const MembraneModel& model, OptimisedScratch& scratch) const {
     const auto vertex_blocks = static_cast<std::ptrdiff_t>(scratch.vertex_blocks.size());
 #pragma omp for schedule(static)
     for (std::ptrdiff_t b = 0; b < vertex_blocks; ++b) {
-      measure_vertex_block(constants_, vertices_, static_cast<std::size_t>(b), scratch);
+      measure_vertex_block(constants_, model.topology(),
+                           model.reference().vertex_mean_curvatures_per_um,
+                           static_cast<std::size_t>(b), scratch);
     }
   }
 
@@ -571,7 +563,6 @@ class OptimisedKernel final : public MembraneKernel {
   FusedConstants constants_;
   HingeStencils hinges_;
   CornerStencils corners_;
-  VertexStencils vertices_;
   VertexGather incidence_;
   std::vector<Term> enabled_terms_;         // the fused terms, in registry order
   std::vector<std::size_t> fused_indices_;  // their entries in MembraneForces::terms

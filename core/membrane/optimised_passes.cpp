@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "membrane/simd_math.hpp"
+#include "membrane/surface_energies.hpp"
 
 namespace rbcsim::membrane::optimised {
 namespace {
@@ -337,32 +338,26 @@ RBCSIM_MEMBRANE_VECTOR_CLONES void weigh_triangle_block(const SlotWeights& weigh
   }
 }
 
-// M_v = (1/2) sum of the ring's l theta / 2, A_v = (1/3) sum of the ring's areas; then, with
-// u = H - H0 and H = M / A (helfrich_term.cpp): kappa u, dE/dA_v = 2 kappa u (u - 2 H) and
+// With u = H - H0 and H = M / A (helfrich_term.cpp): kappa u, dE/dA_v = 2 kappa u (u - 2 H) and
 // E_v = 2 kappa u^2 A_v. Scalar: a ring has five to seven entries.
-void measure_vertex_block(const FusedConstants& constants, const VertexStencils& vertices,
+void measure_vertex_block(const FusedConstants& constants, const mesh::MeshTopology& topology,
+                          std::span<const double> reference_mean_curvatures_per_um,
                           std::size_t block, OptimisedScratch& scratch) {
-  const BlockRange range = block_range(block, vertices.vertex_count());
+  const BlockRange range = block_range(block, topology.vertex_count());
   const double kappa = constants.helfrich_modulus_pN_um;
   VertexBlockSums sums;
   for (std::int32_t v = range.begin; v < range.end; ++v) {
-    double half_curvature_sum_um = 0.0;
-    for (auto slot = vertices.edge_offsets[v]; slot < vertices.edge_offsets[v + 1]; ++slot) {
-      half_curvature_sum_um += scratch.half_curvatures_um[vertices.edges[slot]];
-    }
-    double area_sum_um2 = 0.0;
-    for (auto slot = vertices.triangle_offsets[v]; slot < vertices.triangle_offsets[v + 1];
-         ++slot) {
-      area_sum_um2 += scratch.triangle_areas_um2[vertices.triangles[slot]];
-    }
-    const double area_um2 = area_sum_um2 / 3.0;
-    const double mean_curvature_per_um = 0.5 * half_curvature_sum_um / area_um2;
-    const double departure = mean_curvature_per_um - vertices.reference_mean_curvatures_per_um[v];
-    scratch.helfrich_departures_per_um[v] = departure;
-    scratch.helfrich_curvature_loads_pN[v] = kappa * departure;
-    scratch.helfrich_area_loads_pN_per_um[v] =
+    const auto vertex = static_cast<std::size_t>(v);
+    const double area_um2 = vertex_area_um2(topology, scratch.triangle_areas_um2, vertex);
+    const double mean_curvature_per_um =
+        integrated_mean_curvature_um(topology, scratch.lengths_um, scratch.angles_rad, vertex) /
+        area_um2;
+    const double departure = mean_curvature_per_um - reference_mean_curvatures_per_um[vertex];
+    scratch.helfrich_departures_per_um[vertex] = departure;
+    scratch.helfrich_curvature_loads_pN[vertex] = kappa * departure;
+    scratch.helfrich_area_loads_pN_per_um[vertex] =
         2.0 * kappa * departure * (departure - 2.0 * mean_curvature_per_um);
-    scratch.helfrich_energies_pN_um[v] = 2.0 * kappa * departure * departure * area_um2;
+    scratch.helfrich_energies_pN_um[vertex] = 2.0 * kappa * departure * departure * area_um2;
     sums.helfrich_max_abs_departure_per_um =
         simd::max_magnitude(sums.helfrich_max_abs_departure_per_um, departure);
   }

@@ -12,6 +12,7 @@
 
 #include "membrane/force_law.hpp"
 #include "membrane/optimised_scratch.hpp"
+#include "mesh/topology.hpp"
 
 namespace rbcsim::membrane::optimised {
 
@@ -85,16 +86,6 @@ struct CornerStencils {
   std::vector<double> area_forces_per_um;  // 3 / P0 (area_term.cpp)
 };
 
-// The vertices' rings (mesh::MeshTopology's) and reference mean curvatures H0_v, for helfrich.
-struct VertexStencils {
-  std::vector<std::int32_t> edge_offsets;  // vertex v's edges: edges[edge_offsets[v] ..]
-  std::vector<std::int32_t> edges;
-  std::vector<std::int32_t> triangle_offsets;
-  std::vector<std::int32_t> triangles;
-  std::vector<double> reference_mean_curvatures_per_um;
-  std::size_t vertex_count() const { return edge_offsets.size() - 1; }
-};
-
 // Step 1: one pass over block `block` of the edges (or triangles); positions_xyz is x, y, z per
 // vertex.
 using EdgeBlockPass = void (*)(const FusedConstants& constants, const HingeStencils& hinges,
@@ -104,9 +95,11 @@ void measure_triangle_block(const FusedConstants& constants, const CornerStencil
                             std::size_t block, const double* positions_xyz,
                             OptimisedScratch& scratch);
 
-// Step 1b, after step 1 and only with helfrich: each vertex of block `block` gathers its ring's
-// l theta and areas into M_v and A_v and writes its Helfrich loads and energy.
-void measure_vertex_block(const FusedConstants& constants, const VertexStencils& vertices,
+// Step 1b, after step 1 and only with helfrich: each vertex of block `block` gathers Juelicher's
+// M_v and A_v from the lengths, angles and areas step 1 measured (surface_energies.hpp) and writes
+// its Helfrich loads and energy, H0_v from `reference_mean_curvatures_per_um`.
+void measure_vertex_block(const FusedConstants& constants, const mesh::MeshTopology& topology,
+                          std::span<const double> reference_mean_curvatures_per_um,
                           std::size_t block, OptimisedScratch& scratch);
 
 // The weight of each term in a force: 1 for link, bend and area (their coefficients are in the
