@@ -136,9 +136,10 @@ std::size_t ImplicitMembraneFriction::solve(
     double dt_steps, const lattice::FluidSolver& fluid, const LatestForce& latest_force,
     std::span<Vec3> membrane_velocities_lu, const ImplicitFrictionSettings& settings) {
   prepare(stencil);
-  // The fluid as the next collision will find it (after streaming, before the next force): the
-  // friction must act on that state, not on the latest collision's velocity, which streaming
-  // has since moved by a link (acting on the stale one pumps energy into the flow).
+  // The fluid as the next collision will find it (the populations after streaming; its force's
+  // half is added from `latest_force` in solve_with_moments): the friction must act on that
+  // state, not on the latest collision's velocity, which streaming has since moved by a link
+  // (acting on the stale one pumps energy into the flow).
   std::vector<double> density(nodes_.size());
   std::vector<Vec3> momentum_lu(nodes_.size());
   fluid.pre_collision_moments(nodes_, density, momentum_lu);
