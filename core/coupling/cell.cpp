@@ -197,6 +197,10 @@ void Cell::add_membrane_friction(lattice::FluidSolver& fluid) const {
   if (friction_applied_) friction_.add_momentum_to(fluid);
 }
 
+void Cell::hold_volume() {
+  if (!volume_hold_) volume_hold_.emplace(model_.triangles(), model_.topology());
+}
+
 void Cell::interpolate_and_advance(const ibm::GridView& grid,
                                    const lattice::VectorField& velocity) {
   ibm::interpolate_velocity(stencil_, grid, velocity[0].data(), velocity[1].data(),
@@ -223,6 +227,7 @@ void Cell::advance() {
               velocities_lu_.begin());
     friction_applied_ = false;
   }
+  if (volume_hold_) volume_hold_->apply(positions_lu_, velocities_lu_);
   previous_positions_lu_ = positions_lu_;
   advancer_.advance(positions_lu_, velocities_lu_);
 }

@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -16,6 +17,7 @@
 #include "common/state_archive.hpp"
 #include "common/vec3.hpp"
 #include "coupling/membrane_friction.hpp"
+#include "coupling/volume_hold.hpp"
 #include "ibm/delta_kernels.hpp"
 #include "ibm/grid_view.hpp"
 #include "ibm/interpolation_stencil.hpp"
@@ -59,7 +61,8 @@ class Cell {
   std::span<const Vec3> external_forces_pN() const { return external_forces_pN_; }
   // Membrane (capped) plus external force per vertex: what the latest step spread, pN.
   std::span<const Vec3> total_forces_pN() const { return total_forces_pN_; }
-  // The fluid velocity interpolated at the vertices in the latest step, lattice units.
+  // The velocity the vertices moved with in the latest step, lattice units: the fluid's,
+  // interpolated (or the friction step's), less the volume hold's correction if it holds.
   std::span<const Vec3> velocities_lu() const { return velocities_lu_; }
   // With membrane viscosity: the vertex velocities of the latest implicit friction step (the
   // membrane's velocity S u' there, lattice units) and the conjugate-gradient iterations it took.
@@ -121,6 +124,10 @@ class Cell {
   std::span<const double> adopt_friction_solution(std::span<const double> values,
                                                   std::size_t time_step);
   std::span<const Vec3> membrane_friction_momentum() const { return friction_.momentum(); }
+  // From now on every advance holds the enclosed volume (volume_hold.hpp, `ibm.hold_volume`):
+  // the vertices move with the velocities less a multiple of the volume gradient.
+  void hold_volume();
+  bool holds_volume() const { return volume_hold_.has_value(); }
   // Phases 4-5: interpolates `velocity` with the same stencil, then moves the vertices (dt = 1).
   void interpolate_and_advance(const ibm::GridView& grid, const lattice::VectorField& velocity);
   // The same with the velocities interpolated elsewhere (on the distributed lattice,
@@ -154,8 +161,9 @@ class Cell {
   std::size_t friction_iterations_ = 0;
   ibm::InterpolationStencil stencil_;
   ibm::PointAdvancer advancer_;
+  std::optional<VolumeHold> volume_hold_;
 
-  // Phase 5 from velocities_lu_ (or the friction step's velocities).
+  // Phase 5 from velocities_lu_ (or the friction step's velocities), with the volume hold.
   void advance();
   // The membrane's friction coefficients in lattice force per lattice velocity.
   membrane::EdgeFrictionParameters friction_lu(const LatticeFrame& frame) const;

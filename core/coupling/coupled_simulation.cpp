@@ -115,6 +115,7 @@ std::size_t CoupledSimulation::add_cell(membrane::MembraneModel model,
                                         std::span<const Vec3> positions_um) {
   const std::size_t index = cells_.size();
   Cell cell(std::move(model), positions_um, frame_, *advance_scheme_);
+  if (parameters_.hold_volume) cell.hold_volume();
   if (const auto problem =
           find_domain_exit(cell.positions_lu(), grid_, fluid_->solid_mask().data())) {
     throw InputError(cell_label(index),

@@ -11,7 +11,8 @@
 //      the fluid under each membrane (membrane_friction.hpp), when the populations are natural;
 //   4. the Guo-corrected velocity interpolated at the vertices with the same stencil (after a
 //      friction step: the membrane velocity that step found);
-//   5. vertices advanced (forward Euler by default, `ibm.point_advance`);
+//   5. vertices advanced (forward Euler by default, `ibm.point_advance`), with `ibm.hold_volume`
+//      less the velocity that would change the cell's enclosed volume (volume_hold.hpp);
 //   6. stability checks (stability.hpp), then the observers that are due.
 // Every phase is deterministic, so results do not depend on the number of OpenMP threads.
 //
@@ -72,6 +73,9 @@ struct CouplingParameters {
   // ibm.cytoplasm_update_dx: with a viscosity contrast, the cytoplasm's indicator is recomputed
   // once a vertex has moved this far (lattice spacings) since the last time; 0: every step.
   double cytoplasm_update_lu = 0.05;
+  // ibm.hold_volume: every cell's vertices move so as to keep its enclosed volume
+  // (volume_hold.hpp).
+  bool hold_volume = false;
   StabilityLimits stability;
   // Where failure dumps go (and what observers may write to); empty: no dump.
   std::filesystem::path run_directory;

@@ -99,14 +99,15 @@ TEST(ResolveConfig, MorphologyComesFromTheLastSourceThatSetsIt) {
 // The presets (share/config/presets): `paper` is the paper's membrane as printed, the default;
 // `physiological` bends as the bilayer does (Helfrich's energy in place of Eq. 7), adds the
 // bilayer's area incompressibility (whole and per triangle), membrane viscosity and the
-// cytoplasm's viscosity at their literature values. Every other layer (morphology, files, --set)
-// goes over a preset.
+// cytoplasm's viscosity at their literature values, and holds each cell's enclosed volume. Every
+// other layer (morphology, files, --set) goes over a preset.
 TEST(ResolveConfig, PresetsAreWholeParameterSetsUnderEveryOtherLayer) {
   const auto paper = resolve_config();
   EXPECT_EQ(paper.string("preset"), "paper");
   const std::vector<std::string> six = {"link", "bend", "area", "volume", "area_difference",
                                         "total_curvature"};
   EXPECT_EQ(paper.string_list("membrane.forces"), six);
+  EXPECT_FALSE(paper.boolean("ibm.hold_volume"));  // HemoCell has no such step
   const auto physiological = resolve_config({.morphology = "echinocyte-III",
                                              .preset = "physiological"});
   EXPECT_EQ(physiological.string("preset"), "physiological");
@@ -116,6 +117,7 @@ TEST(ResolveConfig, PresetsAreWholeParameterSetsUnderEveryOtherLayer) {
   EXPECT_EQ(physiological.string_list("membrane.forces"), with_both);
   EXPECT_EQ(physiological.number("membrane.viscosity_Pa_s_um"), 0.5);  // Hochmuth & Hampel 1979
   EXPECT_EQ(physiological.number("physics.cytoplasm_viscosity_ratio"), 5.0);
+  EXPECT_TRUE(physiological.boolean("ibm.hold_volume"));  // the membrane lets no water through
   EXPECT_EQ(paper.number("physics.cytoplasm_viscosity_ratio"), 1.0);
   EXPECT_EQ(physiological.number("membrane.k_bend_kBT"), 70.0);       // the morphology's still
   const ScratchDirectory directory;

@@ -24,6 +24,11 @@ void add_ibm_options(OptionTable& table) {
                    kIbmDefaults.point_advance,
                    "How vertices follow the interpolated velocity: euler (x += u dt, HemoCell's "
                    "scheme) or ab2 (second-order Adams-Bashforth).");
+  table.add_boolean("ibm.hold_volume", kIbmDefaults.hold_volume,
+                    "Move each cell's vertices less the multiple of its volume gradient that "
+                    "would change its enclosed volume (the membrane lets no water through; the "
+                    "interpolated velocity leaks): on in the physiological preset, off in the "
+                    "paper's (HemoCell has no such step).");
   // H has slope <= 1/eps (eps >= 1 dx): 0.05 dx keeps the classes within 0.05 of the membrane's H.
   table
       .add_number("ibm.cytoplasm_update_dx", "dx", kIbmDefaults.cytoplasm_update_lu,

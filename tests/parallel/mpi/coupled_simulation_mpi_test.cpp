@@ -39,7 +39,7 @@ constexpr double kPushPerVertexPN = 0.2;
 // What the cells are made of: capsules in plasma, or with the physiological preset's membrane
 // viscosity (an implicit friction step on the fluid nodes under each membrane, which lie on
 // several processes) in a cytoplasm five times as viscous as the plasma (per-node viscosity
-// classes, located every step).
+// classes, located every step), each cell's volume held as the preset holds it.
 enum class Membrane { elastic, viscous_in_viscous_cytoplasm };
 
 // 16 x 14 x 24 nodes (8 x 7 x 12 um), periodic, the y faces sliding at +-0.01 (lattice units).
@@ -58,6 +58,7 @@ std::unique_ptr<coupling::CoupledSimulation> suspension(
   coupling::CouplingParameters coupling;
   coupling.processes = processes;
   coupling.block_planes = 2;
+  coupling.hold_volume = membrane == Membrane::viscous_in_viscous_cytoplasm;  // as the preset
   auto simulation = std::make_unique<coupling::CoupledSimulation>(
       sheared_box(membrane), coupling::testing::plasma_units(), std::move(coupling));
   auto capsule = coupling::testing::capsule_parameters(300.0);
