@@ -127,7 +127,6 @@ class Cell {
   // From now on every advance holds the enclosed volume (volume_hold.hpp, `ibm.hold_volume`):
   // the vertices move with the velocities less a multiple of the volume gradient.
   void hold_volume();
-  bool holds_volume() const { return volume_hold_.has_value(); }
   // Phases 4-5: interpolates `velocity` with the same stencil, then moves the vertices (dt = 1).
   void interpolate_and_advance(const ibm::GridView& grid, const lattice::VectorField& velocity);
   // The same with the velocities interpolated elsewhere (on the distributed lattice,

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "coupling_fixtures.hpp"
+#include "mesh/geometry.hpp"
 #include "mesh/topology.hpp"
 
 namespace rbcsim::coupling {
@@ -17,12 +18,11 @@ namespace {
 
 using testing::sphere_mesh;
 
+// The volume the mesh's own measure gives (mesh/geometry.hpp), at other positions.
 double enclosed_volume(std::span<const Vec3> positions, std::span<const mesh::Triangle> triangles) {
-  double sum = 0.0;
-  for (const auto& t : triangles) {
-    sum += positions[t[0]].dot(positions[t[1]].cross(positions[t[2]])) / 6.0;
-  }
-  return sum;
+  return mesh::enclosed_volume_um3(
+      {std::vector<Vec3>(positions.begin(), positions.end()),
+       std::vector<mesh::Triangle>(triangles.begin(), triangles.end())});
 }
 
 // An oblate, off-centre ellipsoid, so that no symmetry hides an error.
