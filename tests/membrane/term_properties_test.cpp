@@ -23,11 +23,6 @@ using rbcsim::membrane::MembraneModel;
 using rbcsim::membrane::MembraneParameters;
 namespace shapes = rbcsim::membrane_test;
 
-const std::vector<shapes::NamedShape>& test_shapes() {
-  static const auto all = shapes::property_test_shapes();
-  return all;
-}
-
 bool is_angle_term(const std::string& term) {
   return term == "bend" || term == "area_difference" || term == "total_curvature";
 }
@@ -143,7 +138,9 @@ using TermCase = std::tuple<std::size_t, std::string, std::string>;  // shape, t
 
 class TermProperties : public ::testing::TestWithParam<TermCase> {
  protected:
-  const shapes::NamedShape& shape() const { return test_shapes()[std::get<0>(GetParam())]; }
+  const shapes::NamedShape& shape() const {
+    return shapes::property_test_shape(std::get<0>(GetParam()));
+  }
   const std::string& term() const { return std::get<1>(GetParam()); }
   const std::string& distribution() const { return std::get<2>(GetParam()); }
   MembraneModel model() const {
@@ -222,13 +219,13 @@ TEST_P(TermProperties, IsRestoring) {
 }
 
 std::string term_case_name(const ::testing::TestParamInfo<TermCase>& info) {
-  return test_shapes()[std::get<0>(info.param)].name + "_" + std::get<1>(info.param) + "_" +
-         std::get<2>(info.param);
+  return shapes::property_test_shape_name(std::get<0>(info.param)) + "_" + std::get<1>(info.param) +
+         "_" + std::get<2>(info.param);
 }
 
 // Every registered term, on every shape, in the given distributions.
 auto cases(const std::vector<std::string>& distributions) {
-  return ::testing::Combine(::testing::Range<std::size_t>(0, test_shapes().size()),
+  return ::testing::Combine(::testing::Range<std::size_t>(0, shapes::property_test_shape_count()),
                             ::testing::ValuesIn(rbcsim::membrane::elastic_force_term_names()),
                             ::testing::ValuesIn(distributions));
 }
@@ -273,8 +270,8 @@ INSTANTIATE_TEST_SUITE_P(AllTerms, GradientForm, cases({"gradient"}), term_case_
 TEST(PaperDistribution, ResidualTorqueIsMeasured) {
   std::printf("%-12s %-16s %14s %14s %16s\n", "shape", "term", "torque pN um", "torque ratio",
               "gradient ratio");
-  for (std::size_t s = 0; s < test_shapes().size(); ++s) {
-    const auto& shape = test_shapes()[s];
+  for (std::size_t s = 0; s < shapes::property_test_shape_count(); ++s) {
+    const auto& shape = shapes::property_test_shape(s);
     const auto positions =
         shapes::small_deformation(shape.mesh, 1000u + static_cast<std::uint32_t>(s));
     for (const std::string term : {"bend", "area_difference", "total_curvature"}) {
