@@ -70,13 +70,13 @@ stage "AddressSanitizer + UndefinedBehaviorSanitizer build (clang)"
 #     (ShearedSuspension.StressletCountsTheMembraneViscositysFriction):
 #     ShearedSuspension.StressletOfOneCellEqualsTheWallStress, the same run without it;
 #   the experiment commands under mpiexec against one process (CliMpi.CommandsWriteTheSameFiles-
-#     AsOneProcess, 196 s here, a seventh of CI): DistributedFluidMpi.* at 1, 2 and 4 processes
-#     (the coupled step with 20 cells, its checkpoints and HDF5 snapshots) and the binary under
-#     mpiexec in CliMpi.BenchRanksOnTwoProcesses and CliMpi.ACommandNotYetDistributedStopsWithExit2;
+#     AsOneProcess, 196 s here, a seventh of CI): DistributedFluidMpi.* at 2 and 4 processes (the
+#     coupled step with 20 cells, its checkpoints and HDF5 snapshots) and the binary under mpiexec
+#     in CliMpi.BenchRanksOnTwoProcesses and CliMpi.ACommandNotYetDistributedStopsWithExit2;
 #   the same on 1 and 3 processes (DistributedFluidMpi.SameStateAndCheckpointsOn1Processes and
 #     ...On3Processes, 18 and 32 s, the latter holding both cores): the same exchange code as on 2
-#     and 4, and their results in the Release stage; the bench starting mpiexec itself (CliMpi.BenchPaperCasesOnTwoProcesses, 40 s on both
-#     cores): BenchPaperCases.* and the bench under mpiexec above;
+#     and 4; the bench starting mpiexec itself (CliMpi.BenchPaperCasesOnTwoProcesses, 40 s on
+#     both cores): BenchPaperCases.* and the bench under mpiexec above;
 #   the physiological shear on both fluid kernels (CliShear.ThePhysiologicalMembraneRunsWhichever-
 #     Kernel..., 121 s, a sixth of the stage): the coupled friction in Checkpoint.ResumedRunWith-
 #     MembraneViscosity... and ImplicitMembraneFriction.*, the reference kernel in the lattice tests;

@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -35,10 +34,8 @@ namespace shapes = rbcsim::membrane_test;
 const unsigned kAllTerms = (1u << rbcsim::membrane::fused_force_term_names().size()) - 1u;
 
 struct EquivalenceShape {
-  std::string name;
+  shapes::ShapeRecipe recipe;  // built in the test, not at start-up (test_shapes.hpp)
   bool every_subset;  // every subset of the fused terms, or only each term alone and all of them
-  std::function<rbcsim::mesh::TriangleMesh()>
-      build;  // in the test, not at start-up (test_shapes.hpp)
 };
 
 // Levels 0 and 2 have a last block of elements shorter than the others (30 edges; 480 edges and
@@ -46,12 +43,10 @@ struct EquivalenceShape {
 const std::vector<EquivalenceShape>& equivalence_shapes() {
   static const std::vector<EquivalenceShape> all = [] {
     std::vector<EquivalenceShape> list = {
-        {"ellipsoid0", true, [] { return shapes::ellipsoid(0, Vec3(4.0, 3.0, 2.0)); }},
-        {"ellipsoid2", true, [] { return shapes::ellipsoid(2, Vec3(4.0, 3.0, 2.0)); }}};
-    for (std::size_t s = 0; s < shapes::property_test_shape_count(); ++s) {
-      const auto& name = shapes::property_test_shape_name(s);
-      list.push_back(
-          {name, name.back() == '3', [s] { return shapes::property_test_shape(s).mesh; }});
+        {{"ellipsoid0", [] { return shapes::ellipsoid(0, Vec3(4.0, 3.0, 2.0)); }}, true},
+        {{"ellipsoid2", [] { return shapes::ellipsoid(2, Vec3(4.0, 3.0, 2.0)); }}, true}};
+    for (const auto& recipe : shapes::property_test_recipes()) {
+      list.push_back({recipe, recipe.name.back() == '3'});
     }
     return list;
   }();
@@ -199,7 +194,7 @@ class KernelEquivalence : public ::testing::TestWithParam<ShapeAndDistribution> 
 TEST_P(KernelEquivalence, EveryTermSubsetAgreesWithTheReference) {
   const auto& [shape_index, distribution] = GetParam();
   const auto& shape = equivalence_shapes()[shape_index];
-  const auto mesh = shape.build();
+  const auto mesh = shape.recipe.build();
   const auto seed = 2000u + static_cast<std::uint32_t>(shape_index);
   const std::vector<std::vector<Vec3>> deformations = {shapes::small_deformation(mesh, seed),
                                                        large_deformation(mesh, seed)};
@@ -222,7 +217,7 @@ TEST_P(KernelEquivalence, EveryTermSubsetAgreesWithTheReference) {
 
 std::string shape_and_distribution_name(
     const ::testing::TestParamInfo<ShapeAndDistribution>& info) {
-  return equivalence_shapes()[std::get<0>(info.param)].name + "_" + std::get<1>(info.param);
+  return equivalence_shapes()[std::get<0>(info.param)].recipe.name + "_" + std::get<1>(info.param);
 }
 
 INSTANTIATE_TEST_SUITE_P(
