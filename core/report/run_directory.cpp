@@ -37,8 +37,8 @@ std::vector<std::string> string_list(const JsonField& field) {
 
 }  // namespace
 
-// Relative to the paper's six: "all six", "without area_difference and total_curvature", and a
-// term beyond them appended ("all six + total_area").
+// Relative to the paper's six: "all six", "without area_difference and total_curvature", and the
+// terms beyond them appended ("all six + total_area", "without bend, with helfrich").
 std::string describe_terms(const std::vector<std::string>& enabled) {
   const auto paper = membrane::paper_force_term_names();
   const auto all = membrane::all_force_term_names();
@@ -60,7 +60,8 @@ std::string describe_terms(const std::vector<std::string>& enabled) {
   std::string described = missing.empty()                  ? "all " + count_in_words(paper.size())
                           : missing.size() == paper.size() ? "none of the paper's"
                                                            : "without " + join_words(missing);
-  if (!extra.empty()) described += " + " + join_words(extra);
+  // "without bend, with helfrich": "without bend + helfrich" reads as if both were left out.
+  if (!extra.empty()) described += (missing.empty() ? " + " : ", with ") + join_words(extra);
   return described;
 }
 

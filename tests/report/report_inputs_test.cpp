@@ -31,8 +31,12 @@ TEST(DescribeTerms, NamesATermSetRelativeToThePapersSix) {
   with_total_area.push_back("total_area");
   EXPECT_EQ(describe_terms(with_total_area), "all six + total_area");
   EXPECT_EQ(describe_terms({"link", "bend", "area", "volume", "total_area"}),
-            "without area_difference and total_curvature + total_area");
-  EXPECT_EQ(describe_terms({"total_area"}), "none of the paper's + total_area");
+            "without area_difference and total_curvature, with total_area");
+  EXPECT_EQ(describe_terms({"total_area"}), "none of the paper's, with total_area");
+  // The physiological preset's: Helfrich's bending in place of the paper's.
+  EXPECT_EQ(describe_terms({"link", "helfrich", "area", "volume", "area_difference",
+                            "total_curvature", "total_area", "local_area", "viscosity"}),
+            "without bend, with helfrich, total_area, local_area and viscosity");
   EXPECT_EQ(describe_terms({"link", "springs"}), "link and springs");
 }
 
