@@ -14,10 +14,12 @@
 // physical Re 0.018): a 642-vertex run at 0.5 followed the one at 0.2 within 0.15 % in viscosity
 // over 13 ms, in 2.5 times fewer steps (docs/validation.md, suspensions).
 //
-// Fails today (6 December 2026): with the paper's bending a cell's rim folded past its 30 degree
+// Fails today (7 December 2026): with the paper's bending a cell's rim folded past its 30 degree
 // limit after 41 ms; with the physiological preset's Helfrich bending and local area since, the
 // flow ran 141.9 ms (23.5 D) at 1.34 x Pries' viscosity, then a triangle drifting finer than the
-// lattice reached the paper's area limit (docs/validation.md, suspensions).
+// lattice reached the paper's area limit (docs/validation.md, suspensions). On dx 0.25 um
+// (7 December) it ran 57.7 ms (12 D), 1.08 x Pries at 4-7 D and 1.12 x at the end, before one
+// cell's rim, its vertices held at the force cap, reached the same limit.
 #include <gtest/gtest.h>
 
 #include <cmath>
