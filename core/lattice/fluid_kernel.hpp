@@ -11,6 +11,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <span>
@@ -101,10 +102,19 @@ struct LatticeSetup {
 // fluid only if it is fluid and not across a sliding plane, so that both kernels find f*_h there.
 WallLinkWeights wall_link_weights(const LatticeSetup& setup, std::size_t node, int direction);
 
+// The nodes x in [begin, end) of one row of the lattice; begin == end: none.
+struct ForcedSpan {
+  std::uint32_t begin = 0;
+  std::uint32_t end = 0;
+};
+
 struct StepParameters {
   RelaxationRates rates;
   std::array<double, 3> body_force = {0.0, 0.0, 0.0};  // uniform force density
   bool force_field_active = false;  // false: FluidArrays::force_density is zero and not read
+  // With force_field_active: per row of nodes (y + ny z), the nodes whose force density may be
+  // non-zero (outside them it is zero and need not be read). Null: every node of every row.
+  const ForcedSpan* forced_spans = nullptr;
   std::size_t time = 0;             // steps completed before this one
   // Per-node viscosity (collision.hpp), both or neither: the class of every node in grid order, and
   // the rates of each of the kViscosityClasses classes. Null: every node relaxes at `rates`.

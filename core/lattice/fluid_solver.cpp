@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -172,26 +173,61 @@ void FluidSolver::ensure_kernel() {
   }
 }
 
+void FluidSolver::find_forced_spans() {
+  const auto rows = static_cast<std::int64_t>(grid().row_count());
+  const auto nx = static_cast<std::uint32_t>(grid().nx());
+  forced_spans_.resize(static_cast<std::size_t>(rows));
+  const double* const fx = arrays_.force_density[0].data();
+  const double* const fy = arrays_.force_density[1].data();
+  const double* const fz = arrays_.force_density[2].data();
+  // A node counts as forced when any bit of its force is set: a NaN does, and so does -0.0
+  // (harmless: the row is then read as before).
+  const auto bits = [&](std::size_t node) {
+    return std::bit_cast<std::uint64_t>(fx[node]) | std::bit_cast<std::uint64_t>(fy[node]) |
+           std::bit_cast<std::uint64_t>(fz[node]);
+  };
+#pragma omp parallel for schedule(static) if (grid().worth_threads())
+  for (std::int64_t row = 0; row < rows; ++row) {
+    const std::size_t first = static_cast<std::size_t>(row) * nx;
+    // Most rows are zero: one pass without branches says so.
+    std::uint64_t any = 0;
+    for (std::uint32_t x = 0; x < nx; ++x) any |= bits(first + x);
+    ForcedSpan span;
+    if (any != 0) {
+      while (bits(first + span.begin) == 0) ++span.begin;
+      span.end = nx;
+      while (bits(first + span.end - 1) == 0) --span.end;
+    }
+    forced_spans_[static_cast<std::size_t>(row)] = span;
+  }
+}
+
+void FluidSolver::zero_forced_spans() {
+  const auto rows = static_cast<std::int64_t>(grid().row_count());
+  const auto nx = static_cast<std::size_t>(grid().nx());
+#pragma omp parallel for schedule(static) if (grid().worth_threads())
+  for (std::int64_t row = 0; row < rows; ++row) {
+    const ForcedSpan span = forced_spans_[static_cast<std::size_t>(row)];
+    const std::size_t first = static_cast<std::size_t>(row) * nx + span.begin;
+    for (auto& component : arrays_.force_density) {
+      std::fill_n(component.data() + first, span.end - span.begin, 0.0);
+    }
+  }
+}
+
 void FluidSolver::step() {
   ensure_kernel();
+  if (force_field_active_) find_forced_spans();
   const bool contrast = has_viscosity_contrast();
   kernel_->step(arrays_, {.rates = rates_,
                           .body_force = parameters_.body_force,
                           .force_field_active = force_field_active_,
+                          .forced_spans = force_field_active_ ? forced_spans_.data() : nullptr,
                           .time = time_,
                           .viscosity_classes = contrast ? viscosity_classes_.data() : nullptr,
                           .class_rates = contrast ? class_rates_.data() : nullptr});
   ++time_;
-  if (force_field_active_) {
-    for (auto& component : arrays_.force_density) {
-      const auto count = static_cast<std::int64_t>(component.size());
-      double* const values = component.data();
-#pragma omp parallel for schedule(static) if (grid().worth_threads())
-      for (std::int64_t node = 0; node < count; ++node) {
-        values[node] = 0.0;
-      }
-    }
-  }
+  if (force_field_active_) zero_forced_spans();
 }
 
 void FluidSolver::advance(std::size_t steps) {

@@ -210,6 +210,11 @@ class FluidSolver {
   void require_geometry_editable() const;
   void mark_boundary_node(std::size_t node);
   void ensure_kernel();
+  // forced_spans_ := in each row of nodes, the span from the first to the last node with a
+  // non-zero force density. A step reads and zeroes only those: a single cell forces a few nodes
+  // of its lattice.
+  void find_forced_spans();
+  void zero_forced_spans();
 
   LatticeSetup setup_;
   FluidParameters parameters_;
@@ -220,6 +225,7 @@ class FluidSolver {
   FluidArrays arrays_;
   std::unique_ptr<FluidKernel> kernel_;
   bool force_field_active_ = false;
+  std::vector<ForcedSpan> forced_spans_;  // per row (y + ny z), for the step being made
   std::size_t time_ = 0;
 };
 

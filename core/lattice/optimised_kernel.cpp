@@ -2,6 +2,7 @@
 
 #include "lattice/lees_edwards.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 
@@ -80,23 +81,31 @@ struct Storage<float> {
 
 // TRT relaxation of one pair of opposite populations, `along` c and `against` it, with
 // cu = c.u, cf = c.F, base = 1 - u.u/(2 c_s^2), three_uf = u.F / c_s^2. Same operator as
-// collide_node_reference, written for the pair at once.
+// collide_node_reference, written for the pair at once. Without kForced the force is zero and its
+// source terms, a third of the arithmetic, are left out (they would add exact zeros).
+template <bool kForced>
 [[gnu::always_inline]] inline void relax_pair(double& along, double& against, double weight,
                                               double cu, double cf, double density, double base,
                                               double three_uf, const TrtConstants& k) {
   const double equilibrium_even = weight * density * (base + 4.5 * cu * cu);
   const double equilibrium_odd = weight * density * 3.0 * cu;
-  const double source_even = weight * (9.0 * cu * cf - three_uf);
-  const double source_odd = weight * 3.0 * cf;
-  const double change_even =
-      k.source_even * source_even - k.omega_even * (0.5 * (along + against) - equilibrium_even);
-  const double change_odd =
-      k.source_odd * source_odd - k.omega_odd * (0.5 * (along - against) - equilibrium_odd);
+  const double relaxation_even = k.omega_even * (0.5 * (along + against) - equilibrium_even);
+  const double relaxation_odd = k.omega_odd * (0.5 * (along - against) - equilibrium_odd);
+  double change_even = -relaxation_even;
+  double change_odd = -relaxation_odd;
+  if constexpr (kForced) {
+    const double source_even = weight * (9.0 * cu * cf - three_uf);
+    const double source_odd = weight * 3.0 * cf;
+    change_even = k.source_even * source_even - relaxation_even;
+    change_odd = k.source_odd * source_odd - relaxation_odd;
+  }
   along += change_even + change_odd;
   against += change_even - change_odd;
 }
 
-// Collides one node in place, the 19 directions written out (pairs as in d3q19.hpp).
+// Collides one node in place, the 19 directions written out (pairs as in d3q19.hpp). Without
+// kForced, (fx, fy, fz) must be zero and are not read.
+template <bool kForced>
 [[gnu::always_inline]] inline Moments collide_written_out(double (&f)[kDirections], double fx,
                                                           double fy, double fz,
                                                           const TrtConstants& k) {
@@ -106,23 +115,33 @@ struct Storage<float> {
   const double jy = f[3] - f[4] + f[7] - f[8] - f[9] + f[10] + f[15] - f[16] + f[17] - f[18];
   const double jz = f[5] - f[6] + f[11] - f[12] - f[13] + f[14] + f[15] - f[16] - f[17] + f[18];
   const double inverse_density = 1.0 / density;
-  const double ux = (jx + 0.5 * fx) * inverse_density;
-  const double uy = (jy + 0.5 * fy) * inverse_density;
-  const double uz = (jz + 0.5 * fz) * inverse_density;
+  double ux = jx * inverse_density;
+  double uy = jy * inverse_density;
+  double uz = jz * inverse_density;
+  double three_uf = 0.0;
+  if constexpr (kForced) {
+    ux = (jx + 0.5 * fx) * inverse_density;
+    uy = (jy + 0.5 * fy) * inverse_density;
+    uz = (jz + 0.5 * fz) * inverse_density;
+    three_uf = 3.0 * (ux * fx + uy * fy + uz * fz);
+  }
   const double base = 1.0 - 1.5 * (ux * ux + uy * uy + uz * uz);
-  const double three_uf = 3.0 * (ux * fx + uy * fy + uz * fz);
 
-  f[0] += k.source_even * (-kWeightRest * three_uf) -
-          k.omega_even * (f[0] - kWeightRest * density * base);
-  relax_pair(f[1], f[2], kWeightFace, ux, fx, density, base, three_uf, k);
-  relax_pair(f[3], f[4], kWeightFace, uy, fy, density, base, three_uf, k);
-  relax_pair(f[5], f[6], kWeightFace, uz, fz, density, base, three_uf, k);
-  relax_pair(f[7], f[8], kWeightEdge, ux + uy, fx + fy, density, base, three_uf, k);
-  relax_pair(f[9], f[10], kWeightEdge, ux - uy, fx - fy, density, base, three_uf, k);
-  relax_pair(f[11], f[12], kWeightEdge, ux + uz, fx + fz, density, base, three_uf, k);
-  relax_pair(f[13], f[14], kWeightEdge, ux - uz, fx - fz, density, base, three_uf, k);
-  relax_pair(f[15], f[16], kWeightEdge, uy + uz, fy + fz, density, base, three_uf, k);
-  relax_pair(f[17], f[18], kWeightEdge, uy - uz, fy - fz, density, base, three_uf, k);
+  const double relaxation_rest = k.omega_even * (f[0] - kWeightRest * density * base);
+  if constexpr (kForced) {
+    f[0] += k.source_even * (-kWeightRest * three_uf) - relaxation_rest;
+  } else {
+    f[0] -= relaxation_rest;
+  }
+  relax_pair<kForced>(f[1], f[2], kWeightFace, ux, fx, density, base, three_uf, k);
+  relax_pair<kForced>(f[3], f[4], kWeightFace, uy, fy, density, base, three_uf, k);
+  relax_pair<kForced>(f[5], f[6], kWeightFace, uz, fz, density, base, three_uf, k);
+  relax_pair<kForced>(f[7], f[8], kWeightEdge, ux + uy, fx + fy, density, base, three_uf, k);
+  relax_pair<kForced>(f[9], f[10], kWeightEdge, ux - uy, fx - fy, density, base, three_uf, k);
+  relax_pair<kForced>(f[11], f[12], kWeightEdge, ux + uz, fx + fz, density, base, three_uf, k);
+  relax_pair<kForced>(f[13], f[14], kWeightEdge, ux - uz, fx - fz, density, base, three_uf, k);
+  relax_pair<kForced>(f[15], f[16], kWeightEdge, uy + uz, fy + fz, density, base, three_uf, k);
+  relax_pair<kForced>(f[17], f[18], kWeightEdge, uy - uz, fy - fz, density, base, three_uf, k);
   return {density, ux, uy, uz};
 }
 
@@ -132,7 +151,12 @@ struct Storage<float> {
 // and written by one node only, so iterations are independent: `ivdep` says so to the vectoriser
 // (GCC 12 does not vectorise this loop under `omp simd`, which privatises the array f into a simd
 // array it cannot load from).
-template <bool kForceField, class Real>
+// What a stretch of nodes is forced by: nothing (no body force, and no force field in its row),
+// the uniform body force, or the body force plus the force field. Most of a single cell's lattice
+// feels no force at all, and its collision then skips the forcing terms.
+enum class Forcing { none, uniform, field };
+
+template <Forcing kForcing, class Real>
 RBCSIM_VECTOR_CLONES void collide_run(Real* const (&p)[kDirections], std::size_t first,
                                       std::ptrdiff_t length, FluidArrays& arrays,
                                       const std::array<double, 3>& body_force,
@@ -180,15 +204,20 @@ RBCSIM_VECTOR_CLONES void collide_run(Real* const (&p)[kDirections], std::size_t
                              S::load(p12[n], we), S::load(p13[n], we), S::load(p14[n], we),
                              S::load(p15[n], we), S::load(p16[n], we), S::load(p17[n], we),
                              S::load(p18[n], we)};
-    double fx = body_x;
-    double fy = body_y;
-    double fz = body_z;
-    if constexpr (kForceField) {
+    double fx = 0.0;
+    double fy = 0.0;
+    double fz = 0.0;
+    if constexpr (kForcing != Forcing::none) {
+      fx = body_x;
+      fy = body_y;
+      fz = body_z;
+    }
+    if constexpr (kForcing == Forcing::field) {
       fx += force_x[n];
       fy += force_y[n];
       fz += force_z[n];
     }
-    const Moments moments = collide_written_out(f, fx, fy, fz, k);
+    const Moments moments = collide_written_out<kForcing != Forcing::none>(f, fx, fy, fz, k);
     density[n] = moments.density;
     ux[n] = moments.ux;
     uy[n] = moments.uy;
@@ -220,12 +249,12 @@ RBCSIM_VECTOR_CLONES void collide_run(Real* const (&p)[kDirections], std::size_t
 // stretches; only the few nodes of a cell's rim change class from node to node. (Looking the
 // constants up per node inside the loop kept it from vectorising: the 40x40x20 bench's fluid
 // phase took 2.4x as long.) With kPerNodeRates false, plainly collide_run at `k`.
-template <bool kForceField, bool kPerNodeRates, class Real>
+template <Forcing kForcing, bool kPerNodeRates, class Real>
 void collide_run_at_rates(Real* const (&p)[kDirections], std::size_t first, std::ptrdiff_t length,
                           FluidArrays& arrays, const std::array<double, 3>& body_force,
                           const TrtConstants& k, const ClassConstants& node_rates) {
   if constexpr (!kPerNodeRates) {
-    collide_run<kForceField>(p, first, length, arrays, body_force, k);
+    collide_run<kForcing>(p, first, length, arrays, body_force, k);
   } else {
     const ViscosityClass* const classes = node_rates.classes + first;
     std::ptrdiff_t begin = 0;
@@ -234,8 +263,8 @@ void collide_run_at_rates(Real* const (&p)[kDirections], std::size_t first, std:
       while (end < length && classes[end] == classes[begin]) ++end;
       Real* stretch[kDirections];
       for (int i = 0; i < kDirections; ++i) stretch[i] = p[i] + begin;
-      collide_run<kForceField>(stretch, first + begin, end - begin, arrays, body_force,
-                               node_rates.constants[classes[begin]]);
+      collide_run<kForcing>(stretch, first + begin, end - begin, arrays, body_force,
+                            node_rates.constants[classes[begin]]);
       begin = end;
     }
   }
@@ -256,7 +285,7 @@ struct LinkBuffers {
 
 // The streaming step of one node with boundary links: gather through each link, collide, scatter
 // through each link (the write of f*_i goes through link opp(i), whose source is x + c_i).
-template <bool kForceField, bool kPerNodeRates, class Real>
+template <Forcing kForcing, bool kPerNodeRates, class Real>
 void collide_linked_node(const LinkedNode& linked, std::size_t stride, FluidArrays& arrays,
                          const LinkBuffers& buffers, const std::array<double, 3>& body_force,
                          const TrtConstants& k, const ClassConstants& node_rates) {
@@ -294,14 +323,16 @@ void collide_linked_node(const LinkedNode& linked, std::size_t stride, FluidArra
       }
     }
   }
-  std::array<double, 3> force = body_force;
-  if constexpr (kForceField) {
+  std::array<double, 3> force = {0.0, 0.0, 0.0};
+  if constexpr (kForcing != Forcing::none) force = body_force;
+  if constexpr (kForcing == Forcing::field) {
     for (int axis = 0; axis < 3; ++axis) {
       force[axis] += arrays.force_density[axis][node];
     }
   }
   const TrtConstants& rates = kPerNodeRates ? node_rates.constants[node_rates.classes[node]] : k;
-  const Moments moments = collide_written_out(f, force[0], force[1], force[2], rates);
+  const Moments moments =
+      collide_written_out<kForcing != Forcing::none>(f, force[0], force[1], force[2], rates);
   arrays.density[node] = moments.density;
   arrays.velocity[0][node] = moments.ux;
   arrays.velocity[1][node] = moments.uy;
@@ -333,6 +364,107 @@ void collide_linked_node(const LinkedNode& linked, std::size_t stride, FluidArra
         break;
       }
     }
+  }
+}
+
+// LatticeGrid::wrap for a coordinate at most one node outside [0, extent): a comparison instead
+// of the remainder's division, which in the streaming step's 19 pointers per run cost about a
+// third as much as colliding a 40-node row.
+inline int wrap_by_one(int coordinate, int extent) {
+  return coordinate < 0 ? coordinate + extent
+                        : (coordinate >= extent ? coordinate - extent : coordinate);
+}
+
+// How the nodes of one row are forced: the force field on the span where it may be non-zero
+// (StepParameters::forced_spans; the whole row without them), and elsewhere the body force, if
+// there is one.
+struct RowForcing {
+  ForcedSpan field;
+  Forcing elsewhere;
+
+  RowForcing(const StepParameters& parameters, std::int64_t row, int nx) {
+    const auto& body = parameters.body_force;
+    elsewhere =
+        body[0] == 0.0 && body[1] == 0.0 && body[2] == 0.0 ? Forcing::none : Forcing::uniform;
+    if (!parameters.force_field_active) return;
+    field = parameters.forced_spans != nullptr ? parameters.forced_spans[row]
+                                               : ForcedSpan{0, static_cast<std::uint32_t>(nx)};
+  }
+  Forcing at(int x) const {
+    const auto u = static_cast<std::uint32_t>(x);
+    return u >= field.begin && u < field.end ? Forcing::field : elsewhere;
+  }
+  // The nodes [x_begin, x_end) of the row in at most three pieces forced alike, in order: the
+  // offset from x_begin, the length and the forcing of each.
+  struct Piece {
+    std::ptrdiff_t offset;
+    std::ptrdiff_t length;
+    Forcing forcing;
+  };
+  struct Pieces {
+    std::array<Piece, 3> piece;
+    int count = 0;
+  };
+  Pieces split(int x_begin, int x_end) const {
+    const int lo = std::clamp(static_cast<int>(field.begin), x_begin, x_end);
+    const int hi = std::clamp(static_cast<int>(field.end), lo, x_end);
+    Pieces pieces;
+    if (lo > x_begin) pieces.piece[pieces.count++] = {0, lo - x_begin, elsewhere};
+    if (hi > lo) pieces.piece[pieces.count++] = {lo - x_begin, hi - lo, Forcing::field};
+    if (x_end > hi) pieces.piece[pieces.count++] = {hi - x_begin, x_end - hi, elsewhere};
+    return pieces;
+  }
+};
+
+// The pointers p shifted by `offset` nodes.
+template <class Real>
+struct ShiftedPointers {
+  Real* p[kDirections];
+  ShiftedPointers(Real* const (&from)[kDirections], std::ptrdiff_t offset) {
+    for (int i = 0; i < kDirections; ++i) p[i] = from[i] + offset;
+  }
+};
+
+// collide_run_at_rates and collide_linked_node at a forcing known at run time.
+template <bool kPerNodeRates, class Real>
+void collide_run_forced(Forcing forcing, Real* const (&p)[kDirections], std::size_t first,
+                        std::ptrdiff_t length, FluidArrays& arrays,
+                        const std::array<double, 3>& body_force, const TrtConstants& k,
+                        const ClassConstants& node_rates) {
+  switch (forcing) {
+    case Forcing::none:
+      collide_run_at_rates<Forcing::none, kPerNodeRates>(p, first, length, arrays, body_force, k,
+                                                         node_rates);
+      break;
+    case Forcing::uniform:
+      collide_run_at_rates<Forcing::uniform, kPerNodeRates>(p, first, length, arrays, body_force, k,
+                                                            node_rates);
+      break;
+    case Forcing::field:
+      collide_run_at_rates<Forcing::field, kPerNodeRates>(p, first, length, arrays, body_force, k,
+                                                          node_rates);
+      break;
+  }
+}
+
+template <bool kPerNodeRates, class Real>
+void collide_linked_node_forced(Forcing forcing, const LinkedNode& linked, std::size_t stride,
+                                FluidArrays& arrays, const LinkBuffers& buffers,
+                                const std::array<double, 3>& body_force, const TrtConstants& k,
+                                const ClassConstants& node_rates) {
+  switch (forcing) {
+    case Forcing::none:
+      collide_linked_node<Forcing::none, kPerNodeRates, Real>(linked, stride, arrays, buffers,
+                                                              body_force, k, node_rates);
+      break;
+    case Forcing::uniform:
+      collide_linked_node<Forcing::uniform, kPerNodeRates, Real>(linked, stride, arrays, buffers,
+                                                                 body_force, k, node_rates);
+      break;
+    case Forcing::field:
+      collide_linked_node<Forcing::field, kPerNodeRates, Real>(linked, stride, arrays, buffers,
+                                                               body_force, k, node_rates);
+      break;
   }
 }
 
@@ -490,19 +622,14 @@ void OptimisedKernel::step(FluidArrays& arrays, const StepParameters& parameters
 
 template <bool kPerNodeRates, class Real>
 void OptimisedKernel::step_with(FluidArrays& arrays, const StepParameters& parameters) {
-  const bool local = arrays.layout == PopulationLayout::natural;
-  if (local && parameters.force_field_active) {
-    local_step<true, kPerNodeRates, Real>(arrays, parameters);
-  } else if (local) {
-    local_step<false, kPerNodeRates, Real>(arrays, parameters);
-  } else if (parameters.force_field_active) {
-    streaming_step<true, kPerNodeRates, Real>(arrays, parameters);
+  if (arrays.layout == PopulationLayout::natural) {
+    local_step<kPerNodeRates, Real>(arrays, parameters);
   } else {
-    streaming_step<false, kPerNodeRates, Real>(arrays, parameters);
+    streaming_step<kPerNodeRates, Real>(arrays, parameters);
   }
 }
 
-template <bool kForceField, bool kPerNodeRates, class Real>
+template <bool kPerNodeRates, class Real>
 void OptimisedKernel::local_step(FluidArrays& arrays, const StepParameters& parameters) const {
   const LatticeGrid& grid = setup_.grid;
   const std::size_t stride = arrays.population_stride;
@@ -513,6 +640,7 @@ void OptimisedKernel::local_step(FluidArrays& arrays, const StepParameters& para
 #pragma omp parallel for schedule(static) if (grid.worth_threads())
   for (std::int64_t row = 0; row < rows; ++row) {
     const std::size_t row_start = static_cast<std::size_t>(row) * grid.nx();
+    const RowForcing forcing(parameters, row, grid.nx());
     for (std::size_t r = fluid_run_begin_[row]; r < fluid_run_begin_[row + 1]; ++r) {
       const Run run = fluid_runs_[r];
       const std::size_t first = row_start + run.x_begin;
@@ -520,14 +648,19 @@ void OptimisedKernel::local_step(FluidArrays& arrays, const StepParameters& para
       for (int i = 0; i < kDirections; ++i) {
         p[i] = populations + i * stride + first;
       }
-      collide_run_at_rates<kForceField, kPerNodeRates>(
-          p, first, run.x_end - run.x_begin, arrays, parameters.body_force, constants, node_rates);
+      const auto pieces = forcing.split(run.x_begin, run.x_end);
+      for (int k = 0; k < pieces.count; ++k) {
+        const auto& piece = pieces.piece[k];
+        const ShiftedPointers<Real> q(p, piece.offset);
+        collide_run_forced<kPerNodeRates>(piece.forcing, q.p, first + piece.offset, piece.length,
+                                          arrays, parameters.body_force, constants, node_rates);
+      }
     }
   }
   arrays.layout = PopulationLayout::swapped;
 }
 
-template <bool kForceField, bool kPerNodeRates, class Real>
+template <bool kPerNodeRates, class Real>
 void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& parameters) {
   const LatticeGrid& grid = setup_.grid;
   const std::size_t stride = arrays.population_stride;
@@ -546,23 +679,30 @@ void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& 
     const int y = static_cast<int>(row % grid.ny());
     const int z = static_cast<int>(row / grid.ny());
     const std::size_t row_start = static_cast<std::size_t>(row) * grid.nx();
+    const RowForcing forcing(parameters, row, grid.nx());
     for (std::size_t r = bulk_run_begin_[row]; r < bulk_run_begin_[row + 1]; ++r) {
       const Run run = bulk_runs_[r];
       Real* p[kDirections];
       for (int i = 0; i < kDirections; ++i) {
         const auto& c = kVelocities[i];
         p[i] = populations + kOpposite[i] * stride +
-               grid.index(LatticeGrid::wrap(run.x_begin - c[0], grid.nx()),
-                          LatticeGrid::wrap(y - c[1], grid.ny()),
-                          LatticeGrid::wrap(z - c[2], grid.nz()));
+               grid.index(wrap_by_one(run.x_begin - c[0], grid.nx()),
+                          wrap_by_one(y - c[1], grid.ny()), wrap_by_one(z - c[2], grid.nz()));
       }
-      collide_run_at_rates<kForceField, kPerNodeRates>(
-          p, row_start + run.x_begin, run.x_end - run.x_begin, arrays, parameters.body_force,
-          constants, node_rates);
+      const auto pieces = forcing.split(run.x_begin, run.x_end);
+      for (int k = 0; k < pieces.count; ++k) {
+        const auto& piece = pieces.piece[k];
+        const ShiftedPointers<Real> q(p, piece.offset);
+        collide_run_forced<kPerNodeRates>(piece.forcing, q.p,
+                                          row_start + run.x_begin + piece.offset, piece.length,
+                                          arrays, parameters.body_force, constants, node_rates);
+      }
     }
     for (std::size_t l = linked_begin_[row]; l < linked_begin_[row + 1]; ++l) {
-      collide_linked_node<kForceField, kPerNodeRates, Real>(linked_nodes_[l], stride, arrays, buffers,
-                                                      parameters.body_force, constants, node_rates);
+      const LinkedNode& linked = linked_nodes_[l];
+      collide_linked_node_forced<kPerNodeRates, Real>(
+          forcing.at(static_cast<int>(linked.node - row_start)), linked, stride, arrays, buffers,
+          parameters.body_force, constants, node_rates);
     }
   }
   if (setup_.lees_edwards_velocity) {

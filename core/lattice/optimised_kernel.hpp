@@ -72,9 +72,11 @@ class OptimisedKernel final : public FluidKernel {
   // the population storage, double or float (fluid_kernel.hpp, Precision).
   template <bool kPerNodeRates, class Real>
   void step_with(FluidArrays& arrays, const StepParameters& parameters);
-  template <bool kForceField, bool kPerNodeRates, class Real>
+  // Each row of nodes collides with the forcing it needs (StepParameters::forced_rows): the force
+  // field, the body force alone, or none.
+  template <bool kPerNodeRates, class Real>
   void local_step(FluidArrays& arrays, const StepParameters& parameters) const;
-  template <bool kForceField, bool kPerNodeRates, class Real>
+  template <bool kPerNodeRates, class Real>
   void streaming_step(FluidArrays& arrays, const StepParameters& parameters);
   void store_wall_local_parts(const FluidArrays& arrays);
   void add_wall_parts_behind(FluidArrays& arrays) const;
