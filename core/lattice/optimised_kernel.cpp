@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <optional>
 
 // The bulk loop is compiled for the baseline x86-64 and for AVX2 and AVX-512 machines; the loader
 // picks the best clone the CPU supports, so the binary stays portable (about 2.5x faster on an
@@ -272,6 +275,7 @@ void collide_run_at_rates(Real* const (&p)[kDirections], std::size_t first, std:
 
 using LinkKind = OptimisedKernel::LinkKind;
 using LinkedNode = OptimisedKernel::LinkedNode;
+using WalledNode = OptimisedKernel::WalledNode;
 using InterpolatedLink = OptimisedKernel::InterpolatedLink;
 using Run = OptimisedKernel::Run;
 
@@ -282,6 +286,29 @@ struct LinkBuffers {
   const InterpolatedLink* interpolated_links;
   const double* wall_local_parts;
 };
+
+// Collides the gathered populations f of one node with its forcing and rates, and stores its
+// density and velocity.
+template <Forcing kForcing, bool kPerNodeRates>
+Moments collide_one_node(double (&f)[kDirections], std::size_t node, FluidArrays& arrays,
+                         const std::array<double, 3>& body_force, const TrtConstants& k,
+                         const ClassConstants& node_rates) {
+  std::array<double, 3> force = {0.0, 0.0, 0.0};
+  if constexpr (kForcing != Forcing::none) force = body_force;
+  if constexpr (kForcing == Forcing::field) {
+    for (int axis = 0; axis < 3; ++axis) {
+      force[axis] += arrays.force_density[axis][node];
+    }
+  }
+  const TrtConstants& rates = kPerNodeRates ? node_rates.constants[node_rates.classes[node]] : k;
+  const Moments moments =
+      collide_written_out<kForcing != Forcing::none>(f, force[0], force[1], force[2], rates);
+  arrays.density[node] = moments.density;
+  arrays.velocity[0][node] = moments.ux;
+  arrays.velocity[1][node] = moments.uy;
+  arrays.velocity[2][node] = moments.uz;
+  return moments;
+}
 
 // The streaming step of one node with boundary links: gather through each link, collide, scatter
 // through each link (the write of f*_i goes through link opp(i), whose source is x + c_i).
@@ -323,20 +350,8 @@ void collide_linked_node(const LinkedNode& linked, std::size_t stride, FluidArra
       }
     }
   }
-  std::array<double, 3> force = {0.0, 0.0, 0.0};
-  if constexpr (kForcing != Forcing::none) force = body_force;
-  if constexpr (kForcing == Forcing::field) {
-    for (int axis = 0; axis < 3; ++axis) {
-      force[axis] += arrays.force_density[axis][node];
-    }
-  }
-  const TrtConstants& rates = kPerNodeRates ? node_rates.constants[node_rates.classes[node]] : k;
   const Moments moments =
-      collide_written_out<kForcing != Forcing::none>(f, force[0], force[1], force[2], rates);
-  arrays.density[node] = moments.density;
-  arrays.velocity[0][node] = moments.ux;
-  arrays.velocity[1][node] = moments.uy;
-  arrays.velocity[2][node] = moments.uz;
+      collide_one_node<kForcing, kPerNodeRates>(f, node, arrays, body_force, k, node_rates);
   const std::array<double, 3> velocity = {moments.ux, moments.uy, moments.uz};
   for (int i = 0; i < kDirections; ++i) {
     const int o = kOpposite[i];
@@ -468,6 +483,70 @@ void collide_linked_node_forced(Forcing forcing, const LinkedNode& linked, std::
   }
 }
 
+// The streaming step of a WalledNode: collide_linked_node without its cases (a resting half-way
+// wall adds density x 0 to the bounced population).
+template <Forcing kForcing, bool kPerNodeRates, class Real>
+void collide_walled_node(const WalledNode& walled, std::size_t stride, FluidArrays& arrays,
+                         const std::array<double, 3>& body_force, const TrtConstants& k,
+                         const ClassConstants& node_rates) {
+  using S = Storage<Real>;
+  Real* const populations = S::data(arrays);
+  const std::size_t node = walled.node;
+  double f[kDirections];
+  for (int i = 0; i < kDirections; ++i) {
+    f[i] = S::load(populations[walled.read_slot[i] * stride + walled.read_node[i]], kWeights[i]);
+  }
+  collide_one_node<kForcing, kPerNodeRates>(f, node, arrays, body_force, k, node_rates);
+  for (int i = 0; i < kDirections; ++i) {
+    populations[walled.write_slot[i] * stride + walled.write_node[i]] = S::store(f[i], kWeights[i]);
+  }
+}
+
+template <bool kPerNodeRates, class Real>
+void collide_walled_node_forced(Forcing forcing, const WalledNode& walled, std::size_t stride,
+                                FluidArrays& arrays, const std::array<double, 3>& body_force,
+                                const TrtConstants& k, const ClassConstants& node_rates) {
+  switch (forcing) {
+    case Forcing::none:
+      collide_walled_node<Forcing::none, kPerNodeRates, Real>(walled, stride, arrays, body_force, k,
+                                                              node_rates);
+      break;
+    case Forcing::uniform:
+      collide_walled_node<Forcing::uniform, kPerNodeRates, Real>(walled, stride, arrays, body_force,
+                                                                 k, node_rates);
+      break;
+    case Forcing::field:
+      collide_walled_node<Forcing::field, kPerNodeRates, Real>(walled, stride, arrays, body_force,
+                                                               k, node_rates);
+      break;
+  }
+}
+
+// `linked` as a WalledNode, if every link of it is plain fluid or a resting half-way wall and
+// its node indices fit 32 bits.
+std::optional<WalledNode> as_walled(const LinkedNode& linked, std::size_t node_count) {
+  if (node_count > std::numeric_limits<std::uint32_t>::max()) return std::nullopt;
+  WalledNode walled;
+  walled.node = static_cast<std::uint32_t>(linked.node);
+  for (int i = 0; i < kDirections; ++i) {
+    const auto kind = static_cast<LinkKind>(linked.kind[i]);
+    const bool resting_wall = kind == LinkKind::wall && linked.value[i] == 0.0;
+    if (kind != LinkKind::fluid && !resting_wall) return std::nullopt;
+    const int o = kOpposite[i];
+    // Gather of f_i: from x - c_i, or bounced back at x (slot i holds f*_opp(i)(x)).
+    walled.read_node[i] = static_cast<std::uint32_t>(resting_wall ? linked.node : linked.source[i]);
+    walled.read_slot[i] = static_cast<std::uint8_t>(resting_wall ? i : o);
+  }
+  for (int i = 0; i < kDirections; ++i) {
+    // Scatter of f*_i through link opp(i): to x + c_i, or bounced back into slot opp(i) of x.
+    const int o = kOpposite[i];
+    const bool wall = static_cast<LinkKind>(linked.kind[o]) == LinkKind::wall;
+    walled.write_node[i] = static_cast<std::uint32_t>(wall ? linked.node : linked.source[o]);
+    walled.write_slot[i] = static_cast<std::uint8_t>(wall ? o : i);
+  }
+  return walled;
+}
+
 // Fills the wall link i of `linked` (x - c_i is a wall node): half-way links keep the plain path.
 void link_wall(const LatticeSetup& setup, int i, std::size_t wall_node, LinkedNode& linked,
                std::vector<InterpolatedLink>& interpolated_links) {
@@ -578,7 +657,8 @@ OptimisedKernel::OptimisedKernel(const LatticeSetup& setup)
       plane_size_(static_cast<std::size_t>(setup.grid.nx()) * setup.grid.nz()),
       fluid_run_begin_{0},
       bulk_run_begin_{0},
-      linked_begin_{0} {
+      linked_begin_{0},
+      walled_begin_{0} {
   const LatticeGrid& grid = setup.grid;
   std::vector<char> fluid(grid.nx());
   std::vector<char> bulk(grid.nx());
@@ -592,7 +672,11 @@ OptimisedKernel::OptimisedKernel(const LatticeSetup& setup)
             fluid[x] && link_node(setup, node, plane_size_, linked, interpolated_links_);
         bulk[x] = fluid[x] && !has_links;
         if (has_links) {
-          linked_nodes_.push_back(linked);
+          if (const auto walled = as_walled(linked, grid.node_count())) {
+            walled_nodes_.push_back(*walled);
+          } else {
+            linked_nodes_.push_back(linked);
+          }
         }
       }
       append_runs(fluid, false, fluid_runs_);
@@ -600,6 +684,7 @@ OptimisedKernel::OptimisedKernel(const LatticeSetup& setup)
       fluid_run_begin_.push_back(fluid_runs_.size());
       bulk_run_begin_.push_back(bulk_runs_.size());
       linked_begin_.push_back(linked_nodes_.size());
+      walled_begin_.push_back(walled_nodes_.size());
     }
   }
   if (setup.lees_edwards_velocity) {
@@ -702,6 +787,12 @@ void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& 
       const LinkedNode& linked = linked_nodes_[l];
       collide_linked_node_forced<kPerNodeRates, Real>(
           forcing.at(static_cast<int>(linked.node - row_start)), linked, stride, arrays, buffers,
+          parameters.body_force, constants, node_rates);
+    }
+    for (std::size_t w = walled_begin_[row]; w < walled_begin_[row + 1]; ++w) {
+      const WalledNode& walled = walled_nodes_[w];
+      collide_walled_node_forced<kPerNodeRates, Real>(
+          forcing.at(static_cast<int>(walled.node - row_start)), walled, stride, arrays,
           parameters.body_force, constants, node_rates);
     }
   }

@@ -9,14 +9,17 @@
 // population traffic per node and step) and the order of the nodes, hence the thread count, cannot
 // change a result. Bulk nodes run through a vectorised loop over x with the 19 directions written
 // out; nodes next to a boundary or on a Lees-Edwards plane take a per-link path with precomputed
-// links. Lees-Edwards populations go through small ghost planes: filled before the streaming step
-// from the swapped state, and emptied into the natural state after it. Interpolated wall links
-// (boundaries.hpp) read f*_h(x), f*_i(x) and f*_h(x + c_i), h = opp(i): for the populations of a
-// local step, their local part is stored before the streaming step overwrites f*_i(x) in slot h
-// of x, and f*_h(x + c_i) is x's own gathered population; for those of a streaming step, x's
-// scatter writes the local part and f*_h(x + c_i) is added once the step is complete, when it has
-// arrived in slot h of x. After every streaming step the state equals the reference kernel's;
-// after a local step, its density and velocity do.
+// links, or, when every link is plain fluid or a resting half-way wall, a gather and scatter
+// through precomputed slots (WalledNode). Rows collide without the forcing terms outside the span
+// where the force field is non-zero (StepParameters::forced_spans), and without any where there
+// is no body force either. Lees-Edwards populations go through small ghost planes: filled before
+// the streaming step from the swapped state, and emptied into the natural state after it.
+// Interpolated wall links (boundaries.hpp) read f*_h(x), f*_i(x) and f*_h(x + c_i), h = opp(i): for
+// the populations of a local step, their local part is stored before the streaming step overwrites
+// f*_i(x) in slot h of x, and f*_h(x + c_i) is x's own gathered population; for those of a
+// streaming step, x's scatter writes the local part and f*_h(x + c_i) is added once the step is
+// complete, when it has arrived in slot h of x. After every streaming step the state equals the
+// reference kernel's; after a local step, its density and velocity do.
 #pragma once
 
 #include "lattice/fluid_kernel.hpp"
@@ -50,6 +53,19 @@ class OptimisedKernel final : public FluidKernel {
     std::uint8_t kind[kDirections] = {};
     std::size_t source[kDirections] = {};
     double value[kDirections] = {};
+  };
+
+  // A linked node whose links are all plain fluid or resting half-way walls (most of the nodes
+  // along a tube's wall): its streaming step is a gather and a scatter through fixed slots, with
+  // no case per link. Population i is read from slot read_slot[i] of node read_node[i] (slot
+  // opp(i) of x - c_i, or slot i of x itself behind a wall) and f*_i written to slot
+  // write_slot[i] of write_node[i] (slot i of x + c_i, or slot opp(i) of x before a wall).
+  struct WalledNode {
+    std::uint32_t node = 0;
+    std::uint32_t read_node[kDirections] = {};
+    std::uint32_t write_node[kDirections] = {};
+    std::uint8_t read_slot[kDirections] = {};
+    std::uint8_t write_slot[kDirections] = {};
   };
 
   // A wall link closed by interpolated bounce-back (boundaries.hpp): f_i enters `node` from the
@@ -92,7 +108,9 @@ class OptimisedKernel final : public FluidKernel {
   std::vector<Run> bulk_runs_;  // fluid nodes with fluid neighbours only, never straddling x = 1
                                 // or x = nx - 1, so that the periodic wrap is one pointer offset
   std::vector<std::size_t> linked_begin_;
-  std::vector<LinkedNode> linked_nodes_;
+  std::vector<LinkedNode> linked_nodes_;  // nodes with other links (walled_nodes_ below)
+  std::vector<std::size_t> walled_begin_;
+  std::vector<WalledNode> walled_nodes_;
   std::vector<InterpolatedLink> interpolated_links_;
   // Per interpolated link, the local part of the population entering at the streaming step, taken
   // before that step overwrites f*_i(x) (slot opp(i) of x, which node x + c_i streams from).
