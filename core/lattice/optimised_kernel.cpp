@@ -538,7 +538,8 @@ std::optional<WalledNode> as_walled(const LinkedNode& linked, std::size_t node_c
     walled.read_slot[i] = static_cast<std::uint8_t>(resting_wall ? i : o);
   }
   for (int i = 0; i < kDirections; ++i) {
-    // Scatter of f*_i through link opp(i): to x + c_i, or bounced back into slot opp(i) of x.
+    // Scatter of f*_i through link opp(i): to x + c_i, or bounced back into slot opp(i) of x (a
+    // resting wall: the loop above returned for any other).
     const int o = kOpposite[i];
     const bool wall = static_cast<LinkKind>(linked.kind[o]) == LinkKind::wall;
     walled.write_node[i] = static_cast<std::uint32_t>(wall ? linked.node : linked.source[o]);

@@ -88,7 +88,7 @@ class OptimisedKernel final : public FluidKernel {
   // the population storage, double or float (fluid_kernel.hpp, Precision).
   template <bool kPerNodeRates, class Real>
   void step_with(FluidArrays& arrays, const StepParameters& parameters);
-  // Each row of nodes collides with the forcing it needs (StepParameters::forced_rows): the force
+  // Each row of nodes collides with the forcing it needs (StepParameters::forced_spans): the force
   // field, the body force alone, or none.
   template <bool kPerNodeRates, class Real>
   void local_step(FluidArrays& arrays, const StepParameters& parameters) const;
