@@ -148,17 +148,17 @@ template <bool kForced>
   return {density, ux, uy, uz};
 }
 
+// What a stretch of nodes is forced by: nothing (no body force, and no force field in its row),
+// the uniform body force, or the body force plus the force field. Most of a single cell's lattice
+// feels no force at all, and its collision then skips the forcing terms.
+enum class Forcing { none, uniform, field };
+
 // Collides `length` consecutive nodes starting at grid index `first`. Node k reads f_i from
 // p[i][k] and writes f*_i to p[opp(i)][k]: with p[i] at slot i of the node itself this is the AA
 // local step, with p[i] at slot opp(i) of the node x - c_i the streaming step. Every slot is read
 // and written by one node only, so iterations are independent: `ivdep` says so to the vectoriser
 // (GCC 12 does not vectorise this loop under `omp simd`, which privatises the array f into a simd
 // array it cannot load from).
-// What a stretch of nodes is forced by: nothing (no body force, and no force field in its row),
-// the uniform body force, or the body force plus the force field. Most of a single cell's lattice
-// feels no force at all, and its collision then skips the forcing terms.
-enum class Forcing { none, uniform, field };
-
 template <Forcing kForcing, class Real>
 RBCSIM_VECTOR_CLONES void collide_run(Real* const (&p)[kDirections], std::size_t first,
                                       std::ptrdiff_t length, FluidArrays& arrays,
