@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
+#include <utility>
 
 // The bulk loop is compiled for the baseline x86-64 and for AVX2 and AVX-512 machines; the loader
 // picks the best clone the CPU supports, so the binary stays portable (about 2.5x faster on an
@@ -382,14 +383,6 @@ void collide_linked_node(const LinkedNode& linked, std::size_t stride, FluidArra
   }
 }
 
-// LatticeGrid::wrap for a coordinate at most one node outside [0, extent): a comparison instead
-// of the remainder's division, which in the streaming step's 19 pointers per run cost about a
-// third as much as colliding a 40-node row.
-inline int wrap_by_one(int coordinate, int extent) {
-  return coordinate < 0 ? coordinate + extent
-                        : (coordinate >= extent ? coordinate - extent : coordinate);
-}
-
 // How the nodes of one row are forced: the force field on the span where it may be non-zero
 // (StepParameters::forced_spans; the whole row without them), and elsewhere the body force, if
 // there is one.
@@ -440,49 +433,6 @@ struct ShiftedPointers {
   }
 };
 
-// collide_run_at_rates and collide_linked_node at a forcing known at run time.
-template <bool kPerNodeRates, class Real>
-void collide_run_forced(Forcing forcing, Real* const (&p)[kDirections], std::size_t first,
-                        std::ptrdiff_t length, FluidArrays& arrays,
-                        const std::array<double, 3>& body_force, const TrtConstants& k,
-                        const ClassConstants& node_rates) {
-  switch (forcing) {
-    case Forcing::none:
-      collide_run_at_rates<Forcing::none, kPerNodeRates>(p, first, length, arrays, body_force, k,
-                                                         node_rates);
-      break;
-    case Forcing::uniform:
-      collide_run_at_rates<Forcing::uniform, kPerNodeRates>(p, first, length, arrays, body_force, k,
-                                                            node_rates);
-      break;
-    case Forcing::field:
-      collide_run_at_rates<Forcing::field, kPerNodeRates>(p, first, length, arrays, body_force, k,
-                                                          node_rates);
-      break;
-  }
-}
-
-template <bool kPerNodeRates, class Real>
-void collide_linked_node_forced(Forcing forcing, const LinkedNode& linked, std::size_t stride,
-                                FluidArrays& arrays, const LinkBuffers& buffers,
-                                const std::array<double, 3>& body_force, const TrtConstants& k,
-                                const ClassConstants& node_rates) {
-  switch (forcing) {
-    case Forcing::none:
-      collide_linked_node<Forcing::none, kPerNodeRates, Real>(linked, stride, arrays, buffers,
-                                                              body_force, k, node_rates);
-      break;
-    case Forcing::uniform:
-      collide_linked_node<Forcing::uniform, kPerNodeRates, Real>(linked, stride, arrays, buffers,
-                                                                 body_force, k, node_rates);
-      break;
-    case Forcing::field:
-      collide_linked_node<Forcing::field, kPerNodeRates, Real>(linked, stride, arrays, buffers,
-                                                               body_force, k, node_rates);
-      break;
-  }
-}
-
 // The streaming step of a WalledNode: collide_linked_node without its cases (a resting half-way
 // wall adds density x 0 to the bounced population).
 template <Forcing kForcing, bool kPerNodeRates, class Real>
@@ -502,23 +452,58 @@ void collide_walled_node(const WalledNode& walled, std::size_t stride, FluidArra
   }
 }
 
+// The three ways of colliding (a run, a linked node, a walled node) as operations whose forcing is
+// a template argument, and the one switch that picks it at run time.
+template <bool kPerNodeRates>
+struct CollideRun {
+  template <Forcing kForcing, class... Args>
+  static void at(Args&&... args) {
+    collide_run_at_rates<kForcing, kPerNodeRates>(std::forward<Args>(args)...);
+  }
+};
 template <bool kPerNodeRates, class Real>
-void collide_walled_node_forced(Forcing forcing, const WalledNode& walled, std::size_t stride,
-                                FluidArrays& arrays, const std::array<double, 3>& body_force,
-                                const TrtConstants& k, const ClassConstants& node_rates) {
+struct CollideLinkedNode {
+  template <Forcing kForcing, class... Args>
+  static void at(Args&&... args) {
+    collide_linked_node<kForcing, kPerNodeRates, Real>(std::forward<Args>(args)...);
+  }
+};
+template <bool kPerNodeRates, class Real>
+struct CollideWalledNode {
+  template <Forcing kForcing, class... Args>
+  static void at(Args&&... args) {
+    collide_walled_node<kForcing, kPerNodeRates, Real>(std::forward<Args>(args)...);
+  }
+};
+
+template <class Operation, class... Args>
+void collide_forced(Forcing forcing, Args&&... args) {
   switch (forcing) {
     case Forcing::none:
-      collide_walled_node<Forcing::none, kPerNodeRates, Real>(walled, stride, arrays, body_force, k,
-                                                              node_rates);
+      Operation::template at<Forcing::none>(std::forward<Args>(args)...);
       break;
     case Forcing::uniform:
-      collide_walled_node<Forcing::uniform, kPerNodeRates, Real>(walled, stride, arrays, body_force,
-                                                                 k, node_rates);
+      Operation::template at<Forcing::uniform>(std::forward<Args>(args)...);
       break;
     case Forcing::field:
-      collide_walled_node<Forcing::field, kPerNodeRates, Real>(walled, stride, arrays, body_force,
-                                                               k, node_rates);
+      Operation::template at<Forcing::field>(std::forward<Args>(args)...);
       break;
+  }
+}
+
+// The nodes [x_begin, x_end) of one row, whose populations the pointers p address from x_begin on
+// (node index first), collided piece by piece as RowForcing splits them.
+template <bool kPerNodeRates, class Real>
+void collide_run_pieces(const RowForcing& forcing, Real* const (&p)[kDirections], std::size_t first,
+                        int x_begin, int x_end, FluidArrays& arrays,
+                        const std::array<double, 3>& body_force, const TrtConstants& k,
+                        const ClassConstants& node_rates) {
+  const auto pieces = forcing.split(x_begin, x_end);
+  for (int n = 0; n < pieces.count; ++n) {
+    const auto& piece = pieces.piece[n];
+    const ShiftedPointers<Real> q(p, piece.offset);
+    collide_forced<CollideRun<kPerNodeRates>>(piece.forcing, q.p, first + piece.offset,
+                                              piece.length, arrays, body_force, k, node_rates);
   }
 }
 
@@ -676,16 +661,11 @@ OptimisedKernel::OptimisedKernel(const LatticeSetup& setup)
         // x are not one pointer offset away), whose 19 pointers cost more than its collision: it
         // streams through fixed slots as a walled node instead.
         const bool on_seam = (x == 0 || x == grid.nx() - 1) && grid.nx() > 2;
-        if (bulk[x] && on_seam) {
+        if (has_links || (bulk[x] && on_seam)) {
           if (const auto walled = as_walled(linked, grid.node_count())) {
             walled_nodes_.push_back(*walled);
             bulk[x] = false;
-          }
-        }
-        if (has_links) {
-          if (const auto walled = as_walled(linked, grid.node_count())) {
-            walled_nodes_.push_back(*walled);
-          } else {
+          } else if (has_links) {
             linked_nodes_.push_back(linked);
           }
         }
@@ -744,13 +724,8 @@ void OptimisedKernel::local_step(FluidArrays& arrays, const StepParameters& para
       for (int i = 0; i < kDirections; ++i) {
         p[i] = populations + i * stride + first;
       }
-      const auto pieces = forcing.split(run.x_begin, run.x_end);
-      for (int k = 0; k < pieces.count; ++k) {
-        const auto& piece = pieces.piece[k];
-        const ShiftedPointers<Real> q(p, piece.offset);
-        collide_run_forced<kPerNodeRates>(piece.forcing, q.p, first + piece.offset, piece.length,
-                                          arrays, parameters.body_force, constants, node_rates);
-      }
+      collide_run_pieces<kPerNodeRates>(forcing, p, first, run.x_begin, run.x_end, arrays,
+                                        parameters.body_force, constants, node_rates);
     }
   }
   arrays.layout = PopulationLayout::swapped;
@@ -782,27 +757,22 @@ void OptimisedKernel::streaming_step(FluidArrays& arrays, const StepParameters& 
       for (int i = 0; i < kDirections; ++i) {
         const auto& c = kVelocities[i];
         p[i] = populations + kOpposite[i] * stride +
-               grid.index(wrap_by_one(run.x_begin - c[0], grid.nx()),
-                          wrap_by_one(y - c[1], grid.ny()), wrap_by_one(z - c[2], grid.nz()));
+               grid.index(LatticeGrid::wrap_by_one(run.x_begin - c[0], grid.nx()),
+                          LatticeGrid::wrap_by_one(y - c[1], grid.ny()),
+                          LatticeGrid::wrap_by_one(z - c[2], grid.nz()));
       }
-      const auto pieces = forcing.split(run.x_begin, run.x_end);
-      for (int k = 0; k < pieces.count; ++k) {
-        const auto& piece = pieces.piece[k];
-        const ShiftedPointers<Real> q(p, piece.offset);
-        collide_run_forced<kPerNodeRates>(piece.forcing, q.p,
-                                          row_start + run.x_begin + piece.offset, piece.length,
-                                          arrays, parameters.body_force, constants, node_rates);
-      }
+      collide_run_pieces<kPerNodeRates>(forcing, p, row_start + run.x_begin, run.x_begin, run.x_end,
+                                        arrays, parameters.body_force, constants, node_rates);
     }
     for (std::size_t l = linked_begin_[row]; l < linked_begin_[row + 1]; ++l) {
       const LinkedNode& linked = linked_nodes_[l];
-      collide_linked_node_forced<kPerNodeRates, Real>(
+      collide_forced<CollideLinkedNode<kPerNodeRates, Real>>(
           forcing.at(static_cast<int>(linked.node - row_start)), linked, stride, arrays, buffers,
           parameters.body_force, constants, node_rates);
     }
     for (std::size_t w = walled_begin_[row]; w < walled_begin_[row + 1]; ++w) {
       const WalledNode& walled = walled_nodes_[w];
-      collide_walled_node_forced<kPerNodeRates, Real>(
+      collide_forced<CollideWalledNode<kPerNodeRates, Real>>(
           forcing.at(static_cast<int>(walled.node - row_start)), walled, stride, arrays,
           parameters.body_force, constants, node_rates);
     }
