@@ -201,6 +201,26 @@ void Cell::hold_volume() {
   if (!volume_hold_) volume_hold_.emplace(model_.triangles(), model_.topology());
 }
 
+void Cell::use_sub_spacing_drag(double viscosity_sum_lu, const LatticeFrame& frame) {
+  sub_spacing_drag_.emplace(model_.triangles(), model_.topology());
+  // The elastic forces at rest, in lattice units at lattice positions.
+  membrane::MembraneWorkspace workspace = model_.make_workspace();
+  membrane::MembraneForces forces = model_.make_forces();
+  std::vector<Vec3> positions_um(vertex_count());
+  const ForceFunction forces_at = [&](std::span<const Vec3> positions_lu, std::span<Vec3> out) {
+    for (std::size_t v = 0; v < positions_lu.size(); ++v)
+      positions_um[v] = frame.to_um(positions_lu[v]);
+    model_.compute(positions_um, workspace, forces, membrane::ForceDetail::totals);
+    for (std::size_t v = 0; v < out.size(); ++v) {
+      out[v] = frame.lattice_force_per_pN * forces.total_pN[v];
+    }
+  };
+  drag_rate_per_step_ =
+      fastest_drag_rate(*sub_spacing_drag_, positions_lu_, forces_at, viscosity_sum_lu);
+  drag_viscosity_sum_lu_ =
+      viscosity_sum_lu * std::max(1.0, drag_rate_per_step_ / kMaxDragRatePerStep);
+}
+
 void Cell::interpolate_and_advance(const ibm::GridView& grid,
                                    const lattice::VectorField& velocity) {
   ibm::interpolate_velocity(stencil_, grid, velocity[0].data(), velocity[1].data(),
@@ -226,6 +246,11 @@ void Cell::advance() {
     std::copy(membrane_velocities_lu_.begin(), membrane_velocities_lu_.end(),
               velocities_lu_.begin());
     friction_applied_ = false;
+  }
+  // The forces are those of this step's start, where positions_lu_ still are.
+  if (sub_spacing_drag_) {
+    sub_spacing_drag_->add_velocities(positions_lu_, forces_lu_, drag_viscosity_sum_lu_,
+                                      velocities_lu_);
   }
   if (volume_hold_) volume_hold_->apply(positions_lu_, velocities_lu_);
   previous_positions_lu_ = positions_lu_;

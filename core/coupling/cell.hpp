@@ -17,6 +17,7 @@
 #include "common/state_archive.hpp"
 #include "common/vec3.hpp"
 #include "coupling/membrane_friction.hpp"
+#include "coupling/sub_spacing_drag.hpp"
 #include "coupling/volume_hold.hpp"
 #include "ibm/delta_kernels.hpp"
 #include "ibm/grid_view.hpp"
@@ -127,6 +128,17 @@ class Cell {
   // From now on every advance holds the enclosed volume (volume_hold.hpp, `ibm.hold_volume`):
   // the vertices move with the velocities less a multiple of the volume gradient.
   void hold_volume();
+  // From now on every advance adds the drag on the membrane's sub-spacing modes
+  // (sub_spacing_drag.hpp, `ibm.sub_spacing_drag`) for fluids of viscosities summing to
+  // `viscosity_sum_lu` (eta_out + eta_in, lattice units) on the two sides; raised, where the
+  // membrane's stiffness at its current shape would relax a mode by more than
+  // kMaxDragRatePerStep in one step, until it does not. The explicit step multiplies a mode by
+  // 1 - rate: at 1 the fastest mode is gone in one step, beyond 2 it grows.
+  void use_sub_spacing_drag(double viscosity_sum_lu, const LatticeFrame& frame);
+  static constexpr double kMaxDragRatePerStep = 1.0;
+  // The fastest relaxation per step of the drag at the physical viscosities (0 without it): above
+  // kMaxDragRatePerStep the drag used is that many times stronger.
+  double sub_spacing_drag_rate() const { return drag_rate_per_step_; }
   // Phases 4-5: interpolates `velocity` with the same stencil, then moves the vertices (dt = 1).
   void interpolate_and_advance(const ibm::GridView& grid, const lattice::VectorField& velocity);
   // The same with the velocities interpolated elsewhere (on the distributed lattice,
@@ -161,6 +173,9 @@ class Cell {
   ibm::InterpolationStencil stencil_;
   ibm::PointAdvancer advancer_;
   std::optional<VolumeHold> volume_hold_;
+  std::optional<SubSpacingDrag> sub_spacing_drag_;
+  double drag_viscosity_sum_lu_ = 0.0;
+  double drag_rate_per_step_ = 0.0;
 
   // Phase 5 from velocities_lu_ (or the friction step's velocities), with the volume hold.
   void advance();

@@ -116,6 +116,12 @@ std::size_t CoupledSimulation::add_cell(membrane::MembraneModel model,
   const std::size_t index = cells_.size();
   Cell cell(std::move(model), positions_um, frame_, *advance_scheme_);
   if (parameters_.hold_volume) cell.hold_volume();
+  if (parameters_.sub_spacing_drag) {
+    // Lattice density 1: the dynamic viscosities are the kinematic ones, the cytoplasm's the
+    // plasma's times the contrast.
+    const lattice::FluidParameters& fluid = fluid_->parameters();
+    cell.use_sub_spacing_drag(fluid_->viscosity() * (1.0 + fluid.inner_viscosity_ratio), frame_);
+  }
   if (const auto problem =
           find_domain_exit(cell.positions_lu(), grid_, fluid_->solid_mask().data())) {
     throw InputError(cell_label(index),

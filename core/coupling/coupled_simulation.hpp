@@ -76,6 +76,9 @@ struct CouplingParameters {
   // ibm.hold_volume: every cell's vertices move so as to keep its enclosed volume
   // (volume_hold.hpp).
   bool hold_volume = false;
+  // ibm.sub_spacing_drag: every cell's vertices also move with the fluid's drag on the
+  // membrane's modes finer than the lattice (sub_spacing_drag.hpp).
+  bool sub_spacing_drag = false;
   StabilityLimits stability;
   // Where failure dumps go (and what observers may write to); empty: no dump.
   std::filesystem::path run_directory;

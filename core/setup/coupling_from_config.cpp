@@ -40,6 +40,7 @@ coupling::CouplingParameters coupling_parameters_from(const config::Config& conf
   parameters.point_advance = config.string("ibm.point_advance");
   parameters.cytoplasm_update_lu = config.number("ibm.cytoplasm_update_dx");
   parameters.hold_volume = config.boolean("ibm.hold_volume");
+  parameters.sub_spacing_drag = config.boolean("ibm.sub_spacing_drag");
   auto& stability = parameters.stability;
   stability.max_vertex_step_lu = config.number("stability.max_vertex_step_dx");
   stability.force_cap_vertex_fraction = config.number("stability.force_cap_vertex_fraction");

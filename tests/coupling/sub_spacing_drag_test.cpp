@@ -1,0 +1,307 @@
+// The drag on the membrane's sub-spacing modes (coupling/sub_spacing_drag.hpp,
+// `ibm.sub_spacing_drag`): as a kernel, it moves a vertex only along the membrane, at the Stokes
+// drag of the shortest mode for a force its neighbours do not share, and leaves forces shared along
+// the membrane to the lattice; in a coupled run it relaxes a pattern of triangle areas finer than
+// the lattice, which the immersed boundary alone does not, without moving the cell or changing its
+// volume.
+#include "coupling/sub_spacing_drag.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "coupling/coupled_simulation.hpp"
+#include "coupling_fixtures.hpp"
+#include "mesh/geometry.hpp"
+#include "mesh/topology.hpp"
+
+namespace rbcsim::coupling::sub_spacing_drag_test {
+namespace {
+
+using testing::periodic_fluid;
+using testing::plasma_units;
+using testing::sphere_mesh;
+
+struct VertexMeasures {
+  std::vector<Vec3> normals;
+  std::vector<double> areas;
+  std::vector<double> mean_edge_lengths;
+};
+
+// Area-weighted normals, a third of the triangles' areas and the mean edge length, by hand.
+VertexMeasures measure(const mesh::TriangleMesh& mesh, const mesh::MeshTopology& topology) {
+  VertexMeasures m{std::vector<Vec3>(mesh.vertex_count(), Vec3::Zero()),
+                   std::vector<double>(mesh.vertex_count(), 0.0),
+                   std::vector<double>(mesh.vertex_count(), 0.0)};
+  const auto& x = mesh.positions_um;
+  for (const auto& t : mesh.triangles) {
+    const Vec3 twice_area = (x[t[1]] - x[t[0]]).cross(x[t[2]] - x[t[0]]);
+    for (const int corner : t) {
+      m.normals[corner] += twice_area;
+      m.areas[corner] += twice_area.norm() / 6.0;
+    }
+  }
+  std::vector<int> degree(mesh.vertex_count(), 0);
+  for (const auto& edge : topology.edges()) {
+    const double length = (x[edge.vertex0] - x[edge.vertex1]).norm();
+    for (const int v : {edge.vertex0, edge.vertex1}) {
+      m.mean_edge_lengths[v] += length;
+      ++degree[v];
+    }
+  }
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    m.normals[v].normalize();
+    m.mean_edge_lengths[v] /= degree[v];
+  }
+  return m;
+}
+
+// An off-centre ellipsoid, so that no symmetry hides an error.
+mesh::TriangleMesh ellipsoid(int level) {
+  auto mesh = sphere_mesh(level, 1.0, Vec3::Zero());
+  for (Vec3& x : mesh.positions_um) x = Vec3(3.9 * x.x() + 1.0, 3.5 * x.y() - 2.0, 1.4 * x.z());
+  return mesh;
+}
+
+constexpr double kViscositySum = 0.7;  // eta_out + eta_in, any unit
+
+TEST(SubSpacingDrag, AForceEveryVertexSharesMovesNothing) {
+  const auto mesh = ellipsoid(3);
+  const auto topology = mesh::MeshTopology::build(mesh);
+  SubSpacingDrag drag(mesh.triangles, topology);
+  const std::vector<Vec3> forces(mesh.vertex_count(), Vec3(3.0, -1.0, 2.0));
+  std::vector<Vec3> velocities(mesh.vertex_count(), Vec3::Zero());
+  drag.add_velocities(mesh.positions_um, forces, kViscositySum, velocities);
+  for (std::size_t v = 0; v < velocities.size(); ++v) {
+    EXPECT_LT(velocities[v].norm(), 1e-14) << "vertex " << v;
+  }
+}
+
+TEST(SubSpacingDrag, MovesAVertexOnlyAlongTheMembrane) {
+  const auto mesh = ellipsoid(3);
+  const auto topology = mesh::MeshTopology::build(mesh);
+  const auto measures = measure(mesh, topology);
+  SubSpacingDrag drag(mesh.triangles, topology);
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  std::vector<Vec3> forces(mesh.vertex_count());
+  for (Vec3& f : forces) f = Vec3(normal(random), normal(random), normal(random));
+  std::vector<Vec3> velocities(mesh.vertex_count(), Vec3::Zero());
+  drag.add_velocities(mesh.positions_um, forces, kViscositySum, velocities);
+  double largest = 0.0;
+  for (std::size_t v = 0; v < velocities.size(); ++v) {
+    largest = std::max(largest, velocities[v].norm());
+    EXPECT_LT(std::abs(velocities[v].dot(measures.normals[v])),
+              1e-12 * velocities[v].norm() + 1e-15)
+        << "vertex " << v;
+  }
+  EXPECT_GT(largest, 0.0);
+}
+
+TEST(SubSpacingDrag, OneVertexPushedAloneMovesAtTheStokesDragOfTheShortestMode) {
+  // A force on one vertex alone is the finest pattern there is: it moves at F / ((eta_out +
+  // eta_in) q A), q = pi / l, and each neighbour, whose mean it enters once in its degree, the
+  // other way by that share; nobody else moves. Velocities already there are added to.
+  const auto mesh = ellipsoid(3);
+  const auto topology = mesh::MeshTopology::build(mesh);
+  const auto measures = measure(mesh, topology);
+  SubSpacingDrag drag(mesh.triangles, topology);
+  const std::size_t pushed = 100;
+  const Vec3& n = measures.normals[pushed];
+  const Vec3 tangential = (Vec3(1.0, 2.0, -0.5) - Vec3(1.0, 2.0, -0.5).dot(n) * n) * 4.0;
+  std::vector<Vec3> forces(mesh.vertex_count(), Vec3::Zero());
+  forces[pushed] = tangential + 3.0 * n;  // the normal part moves nothing
+  std::vector<Vec3> velocities(mesh.vertex_count(), Vec3(0.5, 0.0, 0.0));
+  drag.add_velocities(mesh.positions_um, forces, kViscositySum, velocities);
+  const auto drag_of = [&](std::size_t v) {
+    return kViscositySum * std::numbers::pi / measures.mean_edge_lengths[v] * measures.areas[v];
+  };
+  EXPECT_LT((velocities[pushed] - Vec3(0.5, 0.0, 0.0) - tangential / drag_of(pushed)).norm(),
+            1e-12 * tangential.norm() / drag_of(pushed));
+  std::vector<int> degree(mesh.vertex_count(), 0);
+  std::vector<bool> neighbour(mesh.vertex_count(), false);
+  for (const auto& edge : topology.edges()) {
+    ++degree[edge.vertex0];
+    ++degree[edge.vertex1];
+    if (static_cast<std::size_t>(edge.vertex0) == pushed) neighbour[edge.vertex1] = true;
+    if (static_cast<std::size_t>(edge.vertex1) == pushed) neighbour[edge.vertex0] = true;
+  }
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    if (v == pushed) continue;
+    Vec3 expected = Vec3::Zero();
+    if (neighbour[v]) {
+      const Vec3 share = -forces[pushed] / degree[v];
+      expected = (share - share.dot(measures.normals[v]) * measures.normals[v]) / drag_of(v);
+    }
+    EXPECT_LT((velocities[v] - Vec3(0.5, 0.0, 0.0) - expected).norm(), 1e-12) << "vertex " << v;
+  }
+}
+
+// The largest velocity the drag gives a force that turns over the whole of a sphere of `level`
+// (a rigid rotation's, tangential), over the largest it would give that force on one vertex
+// pushed alone.
+double smooth_force_leak(int level) {
+  const Vec3 centre(0.5, -1.0, 2.0);
+  const auto mesh = sphere_mesh(level, 3.0, centre);
+  const auto topology = mesh::MeshTopology::build(mesh);
+  const auto measures = measure(mesh, topology);
+  SubSpacingDrag drag(mesh.triangles, topology);
+  const Vec3 omega(0.3, -0.2, 1.0);
+  std::vector<Vec3> forces(mesh.vertex_count());
+  for (std::size_t v = 0; v < forces.size(); ++v) {
+    forces[v] = omega.cross(mesh.positions_um[v] - centre);
+  }
+  std::vector<Vec3> velocities(mesh.vertex_count(), Vec3::Zero());
+  drag.add_velocities(mesh.positions_um, forces, kViscositySum, velocities);
+  // Against the largest single-vertex response: near the rotation's poles the force vanishes
+  // but the curvature's part of the difference does not.
+  double largest_velocity = 0.0, largest_alone = 0.0;
+  for (std::size_t v = 0; v < forces.size(); ++v) {
+    largest_velocity = std::max(largest_velocity, velocities[v].norm());
+    largest_alone = std::max(
+        largest_alone, forces[v].norm() / (kViscositySum * std::numbers::pi /
+                                           measures.mean_edge_lengths[v] * measures.areas[v]));
+  }
+  return largest_velocity / largest_alone;
+}
+
+TEST(SubSpacingDrag, ASmoothForceIsLeftToTheLattice) {
+  // A force varying over the whole cell is what the lattice resolves. Its neighbours' mean
+  // differs from a vertex's own by the ring's curvature, O((l / R)^2), and by the icosphere's
+  // irregular rings, O(l / R): under 3 % of the largest single-vertex response at level 3
+  // (l / R ~ 0.12), and at least halved with edges half as long (level 4).
+  const double level3 = smooth_force_leak(3);
+  const double level4 = smooth_force_leak(4);
+  EXPECT_LT(level3, 0.03);
+  EXPECT_LT(level4, 0.6 * level3);
+}
+
+TEST(SubSpacingDrag, FindsTheRateOfItsFastestModeBetweenItsBounds) {
+  // Every vertex tied to its place by a spring k: the stiffness is k, and the drag relaxes a
+  // pattern at k times its own largest gain, which lies between that of one vertex pushed alone
+  // (1 / drag_v) and twice it (a neighbours' mean differs from a vertex's by at most twice the
+  // largest force).
+  const auto mesh = ellipsoid(3);
+  const auto topology = mesh::MeshTopology::build(mesh);
+  const auto measures = measure(mesh, topology);
+  SubSpacingDrag drag(mesh.triangles, topology);
+  const double k = 2.5;
+  const ForceFunction springs = [&](std::span<const Vec3> x, std::span<Vec3> f) {
+    for (std::size_t v = 0; v < x.size(); ++v) f[v] = -k * (x[v] - mesh.positions_um[v]);
+  };
+  double largest_gain = 0.0;
+  for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
+    largest_gain =
+        std::max(largest_gain, 1.0 / (kViscositySum * std::numbers::pi /
+                                      measures.mean_edge_lengths[v] * measures.areas[v]));
+  }
+  const double rate = fastest_drag_rate(drag, mesh.positions_um, springs, kViscositySum);
+  EXPECT_GE(rate, k * largest_gain);
+  EXPECT_LE(rate, 2.0 * k * largest_gain);
+}
+
+TEST(SubSpacingDrag, RefusesArraysOfAnotherLengthAndANonPositiveViscosity) {
+  const auto mesh = ellipsoid(1);
+  const auto topology = mesh::MeshTopology::build(mesh);
+  SubSpacingDrag drag(mesh.triangles, topology);
+  std::vector<Vec3> forces(mesh.vertex_count(), Vec3::Zero());
+  std::vector<Vec3> velocities(mesh.vertex_count() - 1, Vec3::Zero());
+  EXPECT_THROW(drag.add_velocities(mesh.positions_um, forces, 1.0, velocities),
+               std::invalid_argument);
+  velocities.resize(mesh.vertex_count());
+  EXPECT_THROW(drag.add_velocities(mesh.positions_um, forces, 0.0, velocities),
+               std::invalid_argument);
+}
+
+// The root mean square of the triangles' relative area changes against `reference`.
+double area_change_rms(std::span<const Vec3> positions, std::span<const Vec3> reference,
+                       std::span<const mesh::Triangle> triangles) {
+  double sum = 0.0;
+  for (const auto& t : triangles) {
+    const double area =
+        (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]).norm();
+    const double rest =
+        (reference[t[1]] - reference[t[0]]).cross(reference[t[2]] - reference[t[0]]).norm();
+    sum += (area / rest - 1.0) * (area / rest - 1.0);
+  }
+  return std::sqrt(sum / static_cast<double>(triangles.size()));
+}
+
+struct Relaxation {
+  double start_rms, end_rms;
+  double centroid_shift_lu, volume_change;
+};
+
+// A capsule of 2562 vertices with edges of half a spacing (the paper's pairing), its vertices
+// moved along the membrane by a random pattern of up to 0.02 dx, in plasma at rest: `steps` coupled
+// steps with and without the drag.
+Relaxation relax_sub_spacing_pattern(bool with_drag, int steps) {
+  const Vec3 centre_um(6.1, 5.9, 6.05);
+  const auto sphere = sphere_mesh(4, 3.6, centre_um);
+  const auto topology = mesh::MeshTopology::build(sphere);
+  const auto measures = measure(sphere, topology);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  std::vector<Vec3> start_um(sphere.positions_um);
+  for (std::size_t v = 0; v < start_um.size(); ++v) {
+    const Vec3 step(uniform(random), uniform(random), uniform(random));
+    const Vec3& n = measures.normals[v];
+    start_um[v] += 0.01 * (step - step.dot(n) * n);
+  }
+  membrane::MembraneParameters parameters = testing::capsule_parameters(20.0);
+  parameters.forces.push_back("local_area");
+  // The pattern's forces do not relax without the drag: no cap, so that both runs see the same
+  // force law (a cap hit would stop the run, by design).
+  parameters.vertex_force_cap_pN = std::numeric_limits<double>::infinity();
+  CouplingParameters coupling;
+  coupling.sub_spacing_drag = with_drag;
+  CoupledSimulation simulation(periodic_fluid(24, 24, 24), plasma_units(), coupling);
+  simulation.add_cell(membrane::MembraneModel(sphere, parameters), start_um);
+  const Cell& cell = simulation.cell(0);
+  const std::vector<Vec3> rest_lu = [&] {
+    std::vector<Vec3> rest(sphere.vertex_count());
+    for (std::size_t v = 0; v < rest.size(); ++v) {
+      rest[v] = simulation.frame().to_lattice(sphere.positions_um[v]);
+    }
+    return rest;
+  }();
+  const Vec3 start_centroid = cell.centroid_lu();
+  const double start_volume = mesh::enclosed_volume_um3(
+      {std::vector<Vec3>(cell.positions_lu().begin(), cell.positions_lu().end()),
+       sphere.triangles});
+  Relaxation result{area_change_rms(cell.positions_lu(), rest_lu, sphere.triangles), 0.0, 0.0, 0.0};
+  for (int step = 0; step < steps; ++step) simulation.step();
+  result.end_rms = area_change_rms(cell.positions_lu(), rest_lu, sphere.triangles);
+  result.centroid_shift_lu = (cell.centroid_lu() - start_centroid).norm();
+  result.volume_change = mesh::enclosed_volume_um3({std::vector<Vec3>(cell.positions_lu().begin(),
+                                                                      cell.positions_lu().end()),
+                                                    sphere.triangles}) /
+                             start_volume -
+                         1.0;
+  return result;
+}
+
+TEST(SubSpacingDrag, RelaxesTriangleAreasFinerThanTheLatticeWhereTheFluidDoesNot) {
+  // Without the drag the fluid carries the pattern's forces only as far as the phi2 kernel
+  // leaves them uncancelled; with it each triangle relaxes at its own rate (local_area's
+  // 500 uN/m over the drag of the shortest mode: ~0.1 per step here). Measured (December
+  // 2026): the rms of 4.3 % falls to 0.95 of itself without and to 0.09 with the drag in 200
+  // steps; the bounds leave room for another kernel or mesh, not for a drag that does nothing.
+  const Relaxation without = relax_sub_spacing_pattern(false, 200);
+  const Relaxation with = relax_sub_spacing_pattern(true, 200);
+  ASSERT_GT(without.start_rms, 0.01);
+  EXPECT_EQ(with.start_rms, without.start_rms);
+  EXPECT_GT(without.end_rms, 0.5 * without.start_rms);
+  EXPECT_LT(with.end_rms, 0.2 * with.start_rms);
+  // Moving along the membrane and summing to almost nothing, it neither moves the cell nor
+  // changes its volume beyond what the relaxing flow itself does.
+  EXPECT_LT(with.centroid_shift_lu, 1e-3);
+  EXPECT_LT(std::abs(with.volume_change), 1e-3);
+}
+
+}  // namespace
+}  // namespace rbcsim::coupling::sub_spacing_drag_test
