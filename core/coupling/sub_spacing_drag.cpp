@@ -59,11 +59,13 @@ void SubSpacingDrag::add_velocities(std::span<const Vec3> positions, std::span<c
     const double count = offsets_[v + 1] - offsets_[v];
     mean_force /= count;
     mean_length /= count;
-    Vec3 unshared = forces[v] - mean_force;
-    unshared -= normal.dot(unshared) * normal;
+    // Along the membrane at 1 / ((eta_out + eta_in) q A), along its normal at half that.
+    const Vec3 unshared = forces[v] - mean_force;
+    const double normal_part = normal.dot(unshared);
     const double wavenumber = std::numbers::pi / mean_length;
     const double vertex_area = triangle_area_sum / 3.0;
-    velocities[v] += unshared / (viscosity_sum * wavenumber * vertex_area);
+    velocities[v] +=
+        (unshared - 0.5 * normal_part * normal) / (viscosity_sum * wavenumber * vertex_area);
   }
 }
 

@@ -8,18 +8,22 @@
 // triangle compressed beside stretched ones, that its own forces cannot move back; they drift
 // until a triangle reaches a force law's limit (docs/validation.md, "What deforms the triangles").
 //
-// In Stokes flow a tangential traction f of wavenumber q on a membrane between fluids of
-// viscosities eta_out and eta_in moves it at v = f / ((eta_out + eta_in) q): on each side the flow
-// decays as exp(-q |z|) and resists with eta q. This adds that response for the part of each
-// vertex's force its edge neighbours do not share:
+// In Stokes flow a traction f of wavenumber q on a membrane between fluids of viscosities eta_out
+// and eta_in moves it at v = f / ((eta_out + eta_in) q) along itself and at half that along its
+// normal: on each side the flow decays as exp(-q |z|) and resists with eta q tangentially and
+// 2 eta q normally. This adds that response for the part of each vertex's force its edge
+// neighbours do not share:
 //
-//     v_i += P_i (F_i - <F>_i) / ((eta_out + eta_in) q_i A_i),   q_i = pi / l_i,
+//     v_i += (T_i + N_i / 2) / ((eta_out + eta_in) q_i A_i),   q_i = pi / l_i,
 //
-// <F>_i the mean force of i's edge neighbours, P_i the projection onto i's tangent plane (normal
-// motion would change the enclosed volume), l_i the mean length of i's edges (q_i is the shortest
-// mode's, two edges long) and A_i the vertex area (a third of its triangles'). A force uniform
-// along the membrane has no such part, and one that varies over many edges (what the lattice
-// resolves) has one smaller by (q l)^2 / 4: the resolved flow is left to the lattice.
+// T_i and N_i the tangential and normal parts of F_i - <F>_i, <F>_i the mean force of i's edge
+// neighbours, l_i the mean length of i's edges (q_i is the shortest mode's, two edges long) and
+// A_i the vertex area (a third of its triangles'). A force uniform along the membrane has no such
+// part, and one that varies over many edges (what the lattice resolves) one smaller by (q l)^2 / 4
+// (on a curved or irregular mesh also by the ring's curvature and irregularity): the resolved flow
+// is left to the lattice. On a curved membrane a pressure's normal forces differ from their
+// neighbours' mean by (l / 2R)^2 of themselves, which moves the membrane along its normals: with
+// `ibm.hold_volume` (as in the physiological preset) the volume's part of that is taken out.
 #pragma once
 
 #include <cstdint>

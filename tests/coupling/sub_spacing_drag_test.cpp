@@ -1,9 +1,9 @@
 // The drag on the membrane's sub-spacing modes (coupling/sub_spacing_drag.hpp,
-// `ibm.sub_spacing_drag`): as a kernel, it moves a vertex only along the membrane, at the Stokes
-// drag of the shortest mode for a force its neighbours do not share, and leaves forces shared along
-// the membrane to the lattice; in a coupled run it relaxes a pattern of triangle areas finer than
-// the lattice, which the immersed boundary alone does not, without moving the cell or changing its
-// volume.
+// `ibm.sub_spacing_drag`): as a kernel, it moves a vertex at the Stokes drag of the shortest mode
+// (along its normal at half the rate) for a force its neighbours do not share, and leaves forces
+// shared along the membrane to the lattice; in a coupled run it relaxes a pattern of triangle areas
+// finer than the lattice, which the immersed boundary alone does not, without moving the cell or
+// changing its volume.
 #include "coupling/sub_spacing_drag.hpp"
 
 #include <gtest/gtest.h>
@@ -81,7 +81,8 @@ TEST(SubSpacingDrag, AForceEveryVertexSharesMovesNothing) {
   }
 }
 
-TEST(SubSpacingDrag, MovesAVertexOnlyAlongTheMembrane) {
+TEST(SubSpacingDrag, MovesAVertexAlongItsNormalAtHalfItsRateAlongTheMembrane) {
+  // Stokes: a traction along the membrane meets eta q on each side, one along its normal 2 eta q.
   const auto mesh = ellipsoid(3);
   const auto topology = mesh::MeshTopology::build(mesh);
   const auto measures = measure(mesh, topology);
@@ -92,14 +93,24 @@ TEST(SubSpacingDrag, MovesAVertexOnlyAlongTheMembrane) {
   for (Vec3& f : forces) f = Vec3(normal(random), normal(random), normal(random));
   std::vector<Vec3> velocities(mesh.vertex_count(), Vec3::Zero());
   drag.add_velocities(mesh.positions_um, forces, kViscositySum, velocities);
-  double largest = 0.0;
+  std::vector<Vec3> neighbour_sum(mesh.vertex_count(), Vec3::Zero());
+  std::vector<int> degree(mesh.vertex_count(), 0);
+  for (const auto& edge : topology.edges()) {
+    neighbour_sum[edge.vertex0] += forces[edge.vertex1];
+    neighbour_sum[edge.vertex1] += forces[edge.vertex0];
+    ++degree[edge.vertex0];
+    ++degree[edge.vertex1];
+  }
   for (std::size_t v = 0; v < velocities.size(); ++v) {
-    largest = std::max(largest, velocities[v].norm());
-    EXPECT_LT(std::abs(velocities[v].dot(measures.normals[v])),
-              1e-12 * velocities[v].norm() + 1e-15)
+    const Vec3 unshared = forces[v] - neighbour_sum[v] / degree[v];
+    const Vec3& n = measures.normals[v];
+    const double drag_v =
+        kViscositySum * std::numbers::pi / measures.mean_edge_lengths[v] * measures.areas[v];
+    const Vec3 along = (unshared - unshared.dot(n) * n) / drag_v;
+    const Vec3 across = 0.5 * unshared.dot(n) * n / drag_v;
+    EXPECT_LT((velocities[v] - along - across).norm(), 1e-12 * (along + across).norm())
         << "vertex " << v;
   }
-  EXPECT_GT(largest, 0.0);
 }
 
 TEST(SubSpacingDrag, OneVertexPushedAloneMovesAtTheStokesDragOfTheShortestMode) {
@@ -114,14 +125,15 @@ TEST(SubSpacingDrag, OneVertexPushedAloneMovesAtTheStokesDragOfTheShortestMode) 
   const Vec3& n = measures.normals[pushed];
   const Vec3 tangential = (Vec3(1.0, 2.0, -0.5) - Vec3(1.0, 2.0, -0.5).dot(n) * n) * 4.0;
   std::vector<Vec3> forces(mesh.vertex_count(), Vec3::Zero());
-  forces[pushed] = tangential + 3.0 * n;  // the normal part moves nothing
+  forces[pushed] = tangential + 3.0 * n;  // the normal part moves at half the rate
   std::vector<Vec3> velocities(mesh.vertex_count(), Vec3(0.5, 0.0, 0.0));
   drag.add_velocities(mesh.positions_um, forces, kViscositySum, velocities);
   const auto drag_of = [&](std::size_t v) {
     return kViscositySum * std::numbers::pi / measures.mean_edge_lengths[v] * measures.areas[v];
   };
-  EXPECT_LT((velocities[pushed] - Vec3(0.5, 0.0, 0.0) - tangential / drag_of(pushed)).norm(),
-            1e-12 * tangential.norm() / drag_of(pushed));
+  const Vec3 expected_pushed = (tangential + 1.5 * n) / drag_of(pushed);
+  EXPECT_LT((velocities[pushed] - Vec3(0.5, 0.0, 0.0) - expected_pushed).norm(),
+            1e-12 * expected_pushed.norm());
   std::vector<int> degree(mesh.vertex_count(), 0);
   std::vector<bool> neighbour(mesh.vertex_count(), false);
   for (const auto& edge : topology.edges()) {
@@ -135,7 +147,7 @@ TEST(SubSpacingDrag, OneVertexPushedAloneMovesAtTheStokesDragOfTheShortestMode) 
     Vec3 expected = Vec3::Zero();
     if (neighbour[v]) {
       const Vec3 share = -forces[pushed] / degree[v];
-      expected = (share - share.dot(measures.normals[v]) * measures.normals[v]) / drag_of(v);
+      expected = (share - 0.5 * share.dot(measures.normals[v]) * measures.normals[v]) / drag_of(v);
     }
     EXPECT_LT((velocities[v] - Vec3(0.5, 0.0, 0.0) - expected).norm(), 1e-12) << "vertex " << v;
   }
@@ -297,8 +309,8 @@ TEST(SubSpacingDrag, RelaxesTriangleAreasFinerThanTheLatticeWhereTheFluidDoesNot
   EXPECT_EQ(with.start_rms, without.start_rms);
   EXPECT_GT(without.end_rms, 0.5 * without.start_rms);
   EXPECT_LT(with.end_rms, 0.2 * with.start_rms);
-  // Moving along the membrane and summing to almost nothing, it neither moves the cell nor
-  // changes its volume beyond what the relaxing flow itself does.
+  // Summing to almost nothing, it neither moves the cell nor changes its volume beyond what the
+  // relaxing flow itself does (3e-5 dx and 1e-6 measured).
   EXPECT_LT(with.centroid_shift_lu, 1e-3);
   EXPECT_LT(std::abs(with.volume_change), 1e-3);
 }

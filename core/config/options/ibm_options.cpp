@@ -31,8 +31,9 @@ void add_ibm_options(OptionTable& table) {
                     "paper's (HemoCell has no such step).");
   table.add_boolean("ibm.sub_spacing_drag", kIbmDefaults.sub_spacing_drag,
                     "Also move each vertex with the fluid's Stokes drag on the part of its force "
-                    "its edge neighbours do not share (tangential; wavenumber pi / edge length), "
-                    "which the lattice cannot carry: holds membrane modes finer than a spacing. "
+                    "its edge neighbours do not share (wavenumber pi / edge length; normal motion "
+                    "at half the rate), which the lattice cannot carry: holds membrane modes "
+                    "finer than a spacing; with ibm.hold_volume. "
                     "On in the physiological preset, off in the paper's (HemoCell has no such "
                     "step).");
   // H has slope <= 1/eps (eps >= 1 dx): 0.05 dx keeps the classes within 0.05 of the membrane's H.
