@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cases/json_values.hpp"
 #include "cases/stretch_output.hpp"
 #include "command_registry.hpp"
 #include "common/errors.hpp"
@@ -233,6 +234,7 @@ void run_stretch_command(const StretchOptions& options) {
   }
   result["stretch"] =
       cases::stretch_result_section(settings.mode, parameters.forces, run.points, comparison);
+  result["stretch"]["sub_spacing_drag"] = cases::sub_spacing_drag_json(run.sub_spacing_drag);
   directory.write_json("result.json", result);
 
   if (options.common.json) {

@@ -155,6 +155,7 @@ nlohmann::ordered_json rate_json(const RatePoint& point, std::size_t index) {
       {"close_contact_steps", run.close_contact_steps},
       {"capped_contact_steps", run.capped_contact_steps},
       {"samples_with_pierced_cells", run.samples_with_pierced_cells},
+      {"sub_spacing_drag", cases::sub_spacing_drag_json(run.sub_spacing_drag)},
       {"stop_reason", run.stop_reason}};
   if (!run.ok()) json["failure"] = run.failure;
   return json;

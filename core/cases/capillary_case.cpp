@@ -453,6 +453,7 @@ CapillaryRun run_capillary(const mesh::TriangleMesh& cell_mesh, const CapillaryP
     run.time_s = simulation.time_s();
     run.force_capped_steps = simulation.capped_steps_per_cell().at(0);
     run.phase_times = simulation.phase_times();
+    run.sub_spacing_drag = simulation.sub_spacing_drag_summary();
   };
   try {
     run.stop_reason = simulation.run().stop_reason;

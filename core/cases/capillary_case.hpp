@@ -119,6 +119,7 @@ struct CapillaryRun {
   std::size_t force_capped_steps = 0;
   // Where this process's coupled steps spent their time (after a resume: the resumed part).
   coupling::StepPhaseTimes phase_times;
+  coupling::SubSpacingDragSummary sub_spacing_drag;
   std::string failure;       // empty when the cell passed; else why not
   bool interrupted = false;  // Ctrl-C: the record so far, a checkpoint written if wired
   bool ok() const { return failure.empty(); }

@@ -100,6 +100,7 @@ nlohmann::ordered_json capillary_result_section(const CapillaryDescription& desc
       {"steps", run.steps},
       {"fluid_settling_steps", run.fluid_settling_steps},
       {"force_capped_steps", run.force_capped_steps},
+      {"sub_spacing_drag", sub_spacing_drag_json(run.sub_spacing_drag)},
       {"stop_reason", run.stop_reason},
   };
 }

@@ -314,6 +314,7 @@ StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const Stretch
   if (fluid_settings.configure) fluid_settings.configure(*simulation);
 
   StretchRun run;
+  run.sub_spacing_drag = simulation->sub_spacing_drag_summary();
   for (; progress.force_index < settings.forces_pN.size(); ++progress.force_index) {
     const double force_pN = settings.forces_pN[progress.force_index];
     if (!progress.force_started) {

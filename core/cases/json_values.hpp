@@ -1,6 +1,7 @@
 // Small conversions shared by the cases' result.json sections.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -31,6 +32,25 @@ inline nlohmann::ordered_json phase_ms_per_step_json(const coupling::StepPhaseTi
   for (const auto& [phase, ms] : coupling::ms_per_step_by_phase(times)) phases[phase] = ms;
   phases["timed_steps"] = times.steps;
   return phases;
+}
+
+// ibm.sub_spacing_drag as the run used it (coupling::SubSpacingDragSummary); null when it was off.
+// viscosity_raised_by is how much stronger than the fluids' drag the raised cells' was.
+inline nlohmann::ordered_json sub_spacing_drag_json(const coupling::SubSpacingDragSummary& drag) {
+  if (!drag.on) return nullptr;
+  const double limit = coupling::Cell::kMaxDragRatePerStep;
+  return {{"fastest_rate_per_step", drag.fastest_rate_per_step},
+          {"limit_rate_per_step", limit},
+          {"raised_cells", drag.raised_cells},
+          {"viscosity_raised_by", std::max(1.0, drag.fastest_rate_per_step / limit)}};
+}
+
+// The summary back from sub_spacing_drag_json (a record a run wrote; null: off).
+inline coupling::SubSpacingDragSummary sub_spacing_drag_from_json(const nlohmann::json& drag) {
+  if (drag.is_null()) return {};
+  return {.on = true,
+          .fastest_rate_per_step = drag.at("fastest_rate_per_step").get<double>(),
+          .raised_cells = drag.at("raised_cells").get<std::size_t>()};
 }
 
 // A number of a record a run wrote (a finished rate's point.json, say); null (written for a

@@ -416,6 +416,7 @@ ShearPoint run_shear_rate(const membrane::MembraneModel& model, const mesh::Tria
   }
   // From the simulation's counters (restored on resume), not from this run() call's summary.
   point.force_cap_steps = simulation.capped_steps_per_cell().at(0);
+  point.sub_spacing_drag = simulation.sub_spacing_drag_summary();
   const auto positions_um = simulation.positions_now_um(0);
   if (const auto averaged = record.averaged_shape()) {
     point.shape = averaged->first.mean;

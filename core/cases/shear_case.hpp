@@ -161,6 +161,7 @@ struct ShearPoint {
   double time_s = 0.0;  // physical time: the simulated time times the viscosity scale
   std::size_t steps = 0;
   std::size_t force_cap_steps = 0;  // steps in which the vertex force cap clamped a vertex
+  coupling::SubSpacingDragSummary sub_spacing_drag;
   std::string stop_reason;
   std::string failure;       // empty unless the run failed (instability): then steady = false
   bool interrupted = false;  // Ctrl-C: failure says so; the shape is the one reached

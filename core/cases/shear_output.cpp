@@ -34,6 +34,7 @@ nlohmann::ordered_json rate_entry(const ShearPoint& point) {
       {"time_s", point.time_s},
       {"steps", point.steps},
       {"force_cap_steps", point.force_cap_steps},
+      {"sub_spacing_drag", sub_spacing_drag_json(point.sub_spacing_drag)},
       {"stop_reason", point.stop_reason},
       {"wall_time_s", point.wall_time_s}};
   if (!point.failure.empty()) entry["failure"] = point.failure;
@@ -73,6 +74,7 @@ ShearPoint shear_point_from_record(const nlohmann::json& record, const std::stri
   point.time_s = number("time_s");
   point.steps = count("steps");
   point.force_cap_steps = count("force_cap_steps");
+  point.sub_spacing_drag = sub_spacing_drag_from_json(record.value("sub_spacing_drag", nullptr));
   point.stop_reason = record.value("stop_reason", std::string());
   point.wall_time_s = number("wall_time_s");
   return point;

@@ -311,6 +311,7 @@ nlohmann::ordered_json sheared_suspension_record(const ShearedSuspensionRun& run
           {"close_contact_steps", run.close_contact_steps},
           {"capped_contact_steps", run.capped_contact_steps},
           {"samples_with_pierced_cells", run.samples_with_pierced_cells},
+          {"sub_spacing_drag", sub_spacing_drag_json(run.sub_spacing_drag)},
           {"stop_reason", run.stop_reason},
           {"failure", run.failure},
           {"interrupted", run.interrupted},
@@ -355,6 +356,7 @@ ShearedSuspensionRun sheared_suspension_from_record(const nlohmann::json& record
   run.close_contact_steps = count("close_contact_steps");
   run.capped_contact_steps = count("capped_contact_steps");
   run.samples_with_pierced_cells = count("samples_with_pierced_cells");
+  run.sub_spacing_drag = sub_spacing_drag_from_json(record.value("sub_spacing_drag", nullptr));
   run.stop_reason = text("stop_reason");
   run.failure = text("failure");
   run.interrupted = record.value("interrupted", false);
@@ -497,6 +499,7 @@ ShearedSuspensionRun run_sheared_suspension(std::span<const SuspensionMorphology
   run.time_s = simulation.time_s();
   run.close_contact_steps = simulation.close_contact_steps();
   run.capped_contact_steps = simulation.capped_contact_steps();
+  run.sub_spacing_drag = simulation.sub_spacing_drag_summary();
   average_samples(run, settings.averaging_fraction);
   return run;
 }

@@ -93,6 +93,7 @@ struct ShearedSuspensionRun {
   std::size_t close_contact_steps = 0;
   std::size_t capped_contact_steps = 0;
   std::size_t samples_with_pierced_cells = 0;
+  coupling::SubSpacingDragSummary sub_spacing_drag;
   std::string stop_reason;
   std::string failure;
   bool interrupted = false;

@@ -118,6 +118,7 @@ struct StretchRun {
   std::vector<StretchPoint> points;  // one per force reached, the failed one included
   std::string failure;               // empty when every force converged; else why the run stopped
   bool interrupted = false;          // by a signal (failure says which), between two points
+  coupling::SubSpacingDragSummary sub_spacing_drag;  // the fluid mode's (quasi-static: off)
   bool ok() const { return failure.empty(); }
 };
 

@@ -501,6 +501,7 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
     run.capped_contact_steps = simulation.capped_contact_steps();
     run.force_capped_steps = simulation.capped_steps_per_cell();
     run.phase_times = simulation.phase_times();
+    run.sub_spacing_drag = simulation.sub_spacing_drag_summary();
   };
   const auto end = run_to_end(simulation);
   run.stop_reason = end.stop_reason;

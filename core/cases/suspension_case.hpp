@@ -128,6 +128,7 @@ struct SuspensionRun {
   std::size_t samples_with_pierced_cells = 0;
   std::vector<std::size_t> force_capped_steps;  // per cell
   coupling::StepPhaseTimes phase_times;         // of the coupled steps (not the plasma's settling)
+  coupling::SubSpacingDragSummary sub_spacing_drag;
   std::string stop_reason;
   std::string failure;
   bool interrupted = false;

@@ -1,5 +1,7 @@
 #include "cases/suspension_output.hpp"
 
+#include "cases/json_values.hpp"
+
 namespace rbcsim::cases {
 
 std::vector<std::string> suspension_table_columns() {
@@ -120,6 +122,7 @@ nlohmann::ordered_json suspension_result_section(std::span<const std::string> mo
       {"capped_contact_steps", run.capped_contact_steps},
       {"samples_with_pierced_cells", run.samples_with_pierced_cells},
       {"force_capped_steps", capped},
+      {"sub_spacing_drag", sub_spacing_drag_json(run.sub_spacing_drag)},
       {"fluid_settling_steps", run.fluid_settling_steps},
       {"steps", run.steps},
       {"time_s", run.time_s},

@@ -111,6 +111,16 @@ void CoupledSimulation::gather_fluid() {
   fluid_gathered_step_ = time_step_;
 }
 
+SubSpacingDragSummary CoupledSimulation::sub_spacing_drag_summary() const {
+  SubSpacingDragSummary summary{.on = parameters_.sub_spacing_drag};
+  for (const Cell& cell : cells_) {
+    summary.fastest_rate_per_step =
+        std::max(summary.fastest_rate_per_step, cell.sub_spacing_drag_rate());
+    if (cell.sub_spacing_drag_rate() > Cell::kMaxDragRatePerStep) ++summary.raised_cells;
+  }
+  return summary;
+}
+
 std::size_t CoupledSimulation::add_cell(membrane::MembraneModel model,
                                         std::span<const Vec3> positions_um) {
   const std::size_t index = cells_.size();

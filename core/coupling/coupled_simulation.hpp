@@ -245,6 +245,8 @@ class CoupledSimulation {
   std::size_t time_step() const { return time_step_; }
   double time_s() const;
   const StepPhaseTimes& phase_times() const { return phase_times_; }
+  // ibm.sub_spacing_drag over the cells added so far (off: SubSpacingDragSummary::on false).
+  SubSpacingDragSummary sub_spacing_drag_summary() const;
   void reset_phase_times() { phase_times_ = {}; }
   std::vector<std::size_t> capped_steps_per_cell() const;
 

@@ -315,5 +315,39 @@ TEST(SubSpacingDrag, RelaxesTriangleAreasFinerThanTheLatticeWhereTheFluidDoesNot
   EXPECT_LT(std::abs(with.volume_change), 1e-3);
 }
 
+// What the runs write to result.json (`sub_spacing_drag`): the fastest rate over the cells and
+// how many had their drag raised, which a membrane a thousand times stiffer than a soft capsule
+// must be (the rate grows with the stiffness; the soft one's is below the limit).
+TEST(SubSpacingDrag, SummarisesTheFastestRateAndTheCellsWhoseDragWasRaised) {
+  const auto soft = testing::capsule_parameters(20.0);
+  const auto stiff = testing::capsule_parameters(20000.0);
+  double stiff_rate = 0.0;
+  const auto summary_of = [&](bool with_drag) {
+    CouplingParameters coupling;
+    coupling.sub_spacing_drag = with_drag;
+    CoupledSimulation simulation(periodic_fluid(40, 24, 24), plasma_units(), coupling);
+    const auto left = sphere_mesh(3, 3.6, Vec3(5.0, 6.0, 6.0));
+    const auto right = sphere_mesh(3, 3.6, Vec3(14.0, 6.0, 6.0));
+    simulation.add_cell(membrane::MembraneModel(left, soft), left.positions_um);
+    simulation.add_cell(membrane::MembraneModel(right, stiff), right.positions_um);
+    const double soft_rate = simulation.cell(0).sub_spacing_drag_rate();
+    stiff_rate = simulation.cell(1).sub_spacing_drag_rate();
+    if (with_drag) {
+      EXPECT_GT(soft_rate, 0.0);
+      EXPECT_LT(soft_rate, Cell::kMaxDragRatePerStep);
+      EXPECT_GT(stiff_rate, Cell::kMaxDragRatePerStep);
+    }
+    return simulation.sub_spacing_drag_summary();
+  };
+  const SubSpacingDragSummary off = summary_of(false);
+  EXPECT_FALSE(off.on);
+  EXPECT_EQ(off.fastest_rate_per_step, 0.0);
+  EXPECT_EQ(off.raised_cells, 0u);
+  const SubSpacingDragSummary on = summary_of(true);
+  EXPECT_TRUE(on.on);
+  EXPECT_EQ(on.fastest_rate_per_step, stiff_rate);
+  EXPECT_EQ(on.raised_cells, 1u);
+}
+
 }  // namespace
 }  // namespace rbcsim::coupling::sub_spacing_drag_test
