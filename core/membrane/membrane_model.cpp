@@ -47,16 +47,16 @@ MembraneModel::MembraneModel(const mesh::TriangleMesh& stress_free_mesh,
 MembraneModel::MembraneModel(const mesh::TriangleMesh& mesh, ReferenceState reference,
                              const MembraneParameters& parameters)
     : triangles_(mesh.triangles),
-      topology_(mesh::MeshTopology::build(mesh)),
+      topology_(std::make_unique<const mesh::MeshTopology>(mesh::MeshTopology::build(mesh))),
       reference_(std::move(reference)),
       parameters_(parameters) {
-  require_reference_matches(reference_, topology_);
+  require_reference_matches(reference_, *topology_);
   require_known_term_names(parameters_.forces);
   require_known_distribution(parameters_.distribution);  // reject an unknown name even if unused
   if (is_vertex_distribution(parameters_.distribution) &&
-      reference_.vertex_offsets_um.size() != topology_.vertex_count()) {
+      reference_.vertex_offsets_um.size() != topology_->vertex_count()) {
     throw std::invalid_argument("membrane reference state has no patch offset per vertex (" +
-                                std::to_string(topology_.vertex_count()) +
+                                std::to_string(topology_->vertex_count()) +
                                 " vertices), which the vertex form needs");
   }
   const auto& kernel = find_membrane_kernel(parameters_.kernel);
@@ -74,7 +74,7 @@ MembraneModel::MembraneModel(const mesh::TriangleMesh& mesh, ReferenceState refe
   if (has_dissipative_terms()) {
     const auto names = std::span(term_names_).subspan(kernel_term_count_);
     dissipative_terms_ = make_force_terms(names, parameters_, reference_);
-    stencils_ = std::make_unique<MeshStencils>(MeshStencils::build(triangles_, topology_));
+    stencils_ = std::make_unique<MeshStencils>(MeshStencils::build(triangles_, *topology_));
   }
   if (std::find(term_names_.begin(), term_names_.end(), "viscosity") != term_names_.end()) {
     friction_ = edge_friction_for(parameters_.viscosity_Pa_s_um, parameters_.viscosity_split);
@@ -89,8 +89,8 @@ MembraneModel& MembraneModel::operator=(MembraneModel&&) noexcept = default;
 MembraneWorkspace MembraneModel::make_workspace() const {
   auto workspace = kernel_->make_workspace(*this);
   if (has_dissipative_terms()) {
-    const auto edges = topology_.edge_count();
-    const auto triangles = topology_.triangle_count();
+    const auto edges = topology_->edge_count();
+    const auto triangles = topology_->triangle_count();
     const auto elements = std::max(edges, triangles);
     workspace.dissipative_geometry = CellGeometry(triangles, edges);
     workspace.dissipative_scratch = TermScratch{std::vector<double>(elements),
@@ -154,8 +154,8 @@ void MembraneModel::add_dissipative_forces(std::span<const Vec3> positions_um,
   if (workspace.dissipative.size() != dissipative_terms_.size()) {
     throw std::invalid_argument("membrane forces: the workspace was not made by this model");
   }
-  measure_cell_geometry(positions_um, triangles_, topology_, workspace.dissipative_geometry);
-  TermContext context{positions_um, triangles_, topology_, *stencils_, reference_,
+  measure_cell_geometry(positions_um, triangles_, *topology_, workspace.dissipative_geometry);
+  TermContext context{positions_um, triangles_, *topology_, *stencils_, reference_,
                       workspace.dissipative_geometry};
   context.velocities_um_per_s = velocities_um_per_s;
   for (std::size_t i = 0; i < dissipative_terms_.size(); ++i) {

@@ -58,9 +58,11 @@ class MembraneModel {
     compute(positions_um, {}, workspace, forces, detail);
   }
 
-  std::size_t vertex_count() const { return topology_.vertex_count(); }
+  std::size_t vertex_count() const { return topology_->vertex_count(); }
   std::span<const mesh::Triangle> triangles() const { return triangles_; }
-  const mesh::MeshTopology& topology() const { return topology_; }
+  // Stays at its address when the model is moved (a Cell in a growing vector): the volume hold
+  // and the sub-spacing drag keep measures that point to it.
+  const mesh::MeshTopology& topology() const { return *topology_; }
   const ReferenceState& reference() const { return reference_; }
   const MembraneParameters& parameters() const { return parameters_; }
   // The enabled terms in registry order: the order of MembraneForces::terms.
@@ -83,7 +85,7 @@ class MembraneModel {
                               ForceDetail detail) const;
 
   std::vector<mesh::Triangle> triangles_;
-  mesh::MeshTopology topology_;
+  std::unique_ptr<const mesh::MeshTopology> topology_;
   ReferenceState reference_;
   MembraneParameters parameters_;
   std::vector<std::string_view> term_names_;

@@ -355,6 +355,17 @@ TEST(MembraneModel, RejectsUnknownNamesAndInsideOutMeshes) {
   EXPECT_THROW(MembraneModel(inside_out, MembraneParameters{}), rbcsim::InputError);
 }
 
+// The volume hold and the sub-spacing drag of a Cell keep measures that point to its model's
+// topology, and cells live in a vector that moves them as it grows.
+TEST(MembraneModel, KeepsItsTopologyAndTrianglesWhereTheyWereWhenMoved) {
+  MembraneModel model(shapes::sphere(1, 1.0), MembraneParameters{});
+  const rbcsim::mesh::MeshTopology* topology = &model.topology();
+  const rbcsim::mesh::Triangle* triangles = model.triangles().data();
+  const MembraneModel moved(std::move(model));
+  EXPECT_EQ(&moved.topology(), topology);
+  EXPECT_EQ(moved.triangles().data(), triangles);
+}
+
 TEST(MembraneModel, DeviationAtTheLimitIsARuntimeFailureNamingTermAndElement) {
   const auto mesh = shapes::sphere(2, 3.0);
   const auto topology = rbcsim::mesh::MeshTopology::build(mesh);
