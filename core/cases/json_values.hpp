@@ -38,19 +38,10 @@ inline nlohmann::ordered_json phase_ms_per_step_json(const coupling::StepPhaseTi
 // viscosity_raised_by is how much stronger than the fluids' drag the raised cells' was.
 inline nlohmann::ordered_json sub_spacing_drag_json(const coupling::SubSpacingDragSummary& drag) {
   if (!drag.on) return nullptr;
-  const double limit = coupling::Cell::kMaxDragRatePerStep;
   return {{"fastest_rate_per_step", drag.fastest_rate_per_step},
-          {"limit_rate_per_step", limit},
+          {"limit_rate_per_step", coupling::Cell::kMaxDragRatePerStep},
           {"raised_cells", drag.raised_cells},
-          {"viscosity_raised_by", std::max(1.0, drag.fastest_rate_per_step / limit)}};
-}
-
-// The summary back from sub_spacing_drag_json (a record a run wrote; null: off).
-inline coupling::SubSpacingDragSummary sub_spacing_drag_from_json(const nlohmann::json& drag) {
-  if (drag.is_null()) return {};
-  return {.on = true,
-          .fastest_rate_per_step = drag.at("fastest_rate_per_step").get<double>(),
-          .raised_cells = drag.at("raised_cells").get<std::size_t>()};
+          {"viscosity_raised_by", drag.viscosity_raised_by}};
 }
 
 // A number of a record a run wrote (a finished rate's point.json, say); null (written for a
@@ -62,6 +53,22 @@ inline double record_number(const nlohmann::json& record, const char* key,
   if (value.is_null()) return std::numeric_limits<double>::quiet_NaN();
   if (!value.is_number()) throw InputError(source, std::string("\"") + key + "\" is not a number");
   return value.get<double>();
+}
+
+// The summary back from sub_spacing_drag_json (a record a run wrote; null: off). InputError
+// naming `source` for a missing or non-numeric figure.
+inline coupling::SubSpacingDragSummary sub_spacing_drag_from_json(const nlohmann::json& drag,
+                                                                  const std::string& source) {
+  if (drag.is_null()) return {};
+  if (!drag.is_object()) throw InputError(source, "\"sub_spacing_drag\" is not an object or null");
+  const double raised_cells = record_number(drag, "raised_cells", source);
+  if (!(raised_cells >= 0.0) || raised_cells != std::floor(raised_cells)) {
+    throw InputError(source, "\"raised_cells\" is not a count");
+  }
+  return {.on = true,
+          .fastest_rate_per_step = record_number(drag, "fastest_rate_per_step", source),
+          .raised_cells = static_cast<std::size_t>(raised_cells),
+          .viscosity_raised_by = record_number(drag, "viscosity_raised_by", source)};
 }
 
 }  // namespace rbcsim::cases

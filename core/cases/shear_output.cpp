@@ -74,7 +74,8 @@ ShearPoint shear_point_from_record(const nlohmann::json& record, const std::stri
   point.time_s = number("time_s");
   point.steps = count("steps");
   point.force_cap_steps = count("force_cap_steps");
-  point.sub_spacing_drag = sub_spacing_drag_from_json(record.value("sub_spacing_drag", nullptr));
+  point.sub_spacing_drag =
+      sub_spacing_drag_from_json(record.value("sub_spacing_drag", nullptr), source);
   point.stop_reason = record.value("stop_reason", std::string());
   point.wall_time_s = number("wall_time_s");
   return point;

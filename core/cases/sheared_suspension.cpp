@@ -356,7 +356,8 @@ ShearedSuspensionRun sheared_suspension_from_record(const nlohmann::json& record
   run.close_contact_steps = count("close_contact_steps");
   run.capped_contact_steps = count("capped_contact_steps");
   run.samples_with_pierced_cells = count("samples_with_pierced_cells");
-  run.sub_spacing_drag = sub_spacing_drag_from_json(record.value("sub_spacing_drag", nullptr));
+  run.sub_spacing_drag =
+      sub_spacing_drag_from_json(record.value("sub_spacing_drag", nullptr), source);
   run.stop_reason = text("stop_reason");
   run.failure = text("failure");
   run.interrupted = record.value("interrupted", false);

@@ -217,8 +217,8 @@ void Cell::use_sub_spacing_drag(double viscosity_sum_lu, const LatticeFrame& fra
   };
   drag_rate_per_step_ =
       fastest_drag_rate(*sub_spacing_drag_, positions_lu_, forces_at, viscosity_sum_lu);
-  drag_viscosity_sum_lu_ =
-      viscosity_sum_lu * std::max(1.0, drag_rate_per_step_ / kMaxDragRatePerStep);
+  drag_raised_by_ = std::max(1.0, drag_rate_per_step_ / kMaxDragRatePerStep);
+  drag_viscosity_sum_lu_ = viscosity_sum_lu * drag_raised_by_;
 }
 
 void Cell::interpolate_and_advance(const ibm::GridView& grid,

@@ -139,6 +139,8 @@ class Cell {
   // The fastest relaxation per step of the drag at the physical viscosities (0 without it): above
   // kMaxDragRatePerStep the drag used is that many times stronger.
   double sub_spacing_drag_rate() const { return drag_rate_per_step_; }
+  // How many times the fluids' viscosity the drag uses: 1 unless it was raised as above.
+  double sub_spacing_drag_raised_by() const { return drag_raised_by_; }
   // Phases 4-5: interpolates `velocity` with the same stencil, then moves the vertices (dt = 1).
   void interpolate_and_advance(const ibm::GridView& grid, const lattice::VectorField& velocity);
   // The same with the velocities interpolated elsewhere (on the distributed lattice,
@@ -176,6 +178,7 @@ class Cell {
   std::optional<SubSpacingDrag> sub_spacing_drag_;
   double drag_viscosity_sum_lu_ = 0.0;
   double drag_rate_per_step_ = 0.0;
+  double drag_raised_by_ = 1.0;
 
   // Phase 5 from velocities_lu_ (or the friction step's velocities), with the volume hold.
   void advance();

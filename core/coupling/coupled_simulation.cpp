@@ -116,7 +116,9 @@ SubSpacingDragSummary CoupledSimulation::sub_spacing_drag_summary() const {
   for (const Cell& cell : cells_) {
     summary.fastest_rate_per_step =
         std::max(summary.fastest_rate_per_step, cell.sub_spacing_drag_rate());
-    if (cell.sub_spacing_drag_rate() > Cell::kMaxDragRatePerStep) ++summary.raised_cells;
+    summary.viscosity_raised_by =
+        std::max(summary.viscosity_raised_by, cell.sub_spacing_drag_raised_by());
+    if (cell.sub_spacing_drag_raised_by() > 1.0) ++summary.raised_cells;
   }
   return summary;
 }

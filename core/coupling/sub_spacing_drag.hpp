@@ -70,13 +70,15 @@ double fastest_drag_rate(SubSpacingDrag& drag, std::span<const Vec3> positions,
                          const ForceFunction& forces_at, double viscosity_sum);
 
 // ibm.sub_spacing_drag as the cells use it: the fastest relaxation per step of the drag at the
-// fluids' viscosities over all cells (Cell::sub_spacing_drag_rate), and how many cells had it
+// fluids' viscosities over all cells (Cell::sub_spacing_drag_rate), how many cells had it
 // raised because theirs exceeded Cell::kMaxDragRatePerStep (their drag is then stronger than the
-// fluid's: a numerical damping, not physics).
+// fluid's: a numerical damping, not physics), and the largest factor one was raised by
+// (Cell::sub_spacing_drag_raised_by; 1 when none was).
 struct SubSpacingDragSummary {
   bool on = false;
   double fastest_rate_per_step = 0.0;
   std::size_t raised_cells = 0;
+  double viscosity_raised_by = 1.0;
 };
 
 }  // namespace rbcsim::coupling

@@ -10,10 +10,14 @@
 
 #include <cmath>
 #include <limits>
+#include <nlohmann/json.hpp>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
+#include "cases/json_values.hpp"
+#include "common/errors.hpp"
 #include "coupling/coupled_simulation.hpp"
 #include "coupling_fixtures.hpp"
 #include "mesh/geometry.hpp"
@@ -343,10 +347,40 @@ TEST(SubSpacingDrag, SummarisesTheFastestRateAndTheCellsWhoseDragWasRaised) {
   EXPECT_FALSE(off.on);
   EXPECT_EQ(off.fastest_rate_per_step, 0.0);
   EXPECT_EQ(off.raised_cells, 0u);
+  EXPECT_EQ(off.viscosity_raised_by, 1.0);
   const SubSpacingDragSummary on = summary_of(true);
   EXPECT_TRUE(on.on);
   EXPECT_EQ(on.fastest_rate_per_step, stiff_rate);
   EXPECT_EQ(on.raised_cells, 1u);
+  EXPECT_DOUBLE_EQ(on.viscosity_raised_by, stiff_rate / Cell::kMaxDragRatePerStep);
+}
+
+// A finished rate's point.json keeps the summary (a resumed sweep reports it): it reads back as
+// written, and a hand-broken entry is one InputError naming the file, not the JSON library's.
+TEST(SubSpacingDrag, SummaryReadsBackFromARecordAndABrokenOneNamesItsFile) {
+  const SubSpacingDragSummary written{
+      .on = true, .fastest_rate_per_step = 2.5, .raised_cells = 3, .viscosity_raised_by = 2.5};
+  const nlohmann::json record = cases::sub_spacing_drag_json(written);
+  const auto read = cases::sub_spacing_drag_from_json(record, "point.json");
+  EXPECT_TRUE(read.on);
+  EXPECT_EQ(read.fastest_rate_per_step, 2.5);
+  EXPECT_EQ(read.raised_cells, 3u);
+  EXPECT_EQ(read.viscosity_raised_by, 2.5);
+  EXPECT_FALSE(cases::sub_spacing_drag_from_json(nullptr, "point.json").on);
+  for (const char* broken : {R"({"fastest_rate_per_step": 2.5, "raised_cells": 3})",
+                             R"({"fastest_rate_per_step": "fast", "raised_cells": 3,
+                                 "viscosity_raised_by": 1})",
+                             R"({"fastest_rate_per_step": 2.5, "raised_cells": 1.5,
+                                 "viscosity_raised_by": 1})",
+                             "[1, 2]"}) {
+    SCOPED_TRACE(broken);
+    try {
+      (void)cases::sub_spacing_drag_from_json(nlohmann::json::parse(broken), "point.json");
+      ADD_FAILURE() << "accepted";
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("point.json"), std::string::npos) << error.what();
+    }
+  }
 }
 
 }  // namespace
