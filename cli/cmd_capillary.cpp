@@ -284,7 +284,8 @@ void run_capillary_command(const CapillaryOptions& options) {
   const auto orientations = cases::release_orientations(count, seed);
 
   const RunDirectory directory("capillary", options.common, config);
-  const auto physics = setup::capillary_physics_from(simulated, wall, directory.path());
+  const auto physics =
+      setup::capillary_physics_from(simulated, wall, cell_mesh.mesh, directory.path());
   const CapillaryContext context{options,  config,    simulated, wall,   compression,
                                  settings, cell_mesh, directory, physics};
   bool started = false;

@@ -223,8 +223,8 @@ void run_shear_command(const ShearOptions& options) {
     return;
   }
   const auto settings = setup::shear_settings_from(config);
-  const auto parameters = setup::membrane_parameters_from(config);
   auto cell_mesh = setup::cell_mesh_from(config);
+  const auto parameters = setup::cell_membrane_parameters_from(config, cell_mesh.mesh);
   setup::add_resolution_notice(cell_mesh, config);
   setup::add_edge_spacing_notice(cell_mesh, config.number("lattice.spacing_um"));
   print_notices(cell_mesh.notices);

@@ -187,8 +187,8 @@ void run_stretch_command(const StretchOptions& options) {
   require_stretch_runs_across_processes(config);
   auto settings = setup::stretch_settings_from(config);
   require_fluid_mode_for_checkpoints(options, settings);
-  const auto parameters = setup::membrane_parameters_from(config);
   auto cell_mesh = setup::cell_mesh_from(config);
+  const auto parameters = setup::cell_membrane_parameters_from(config, cell_mesh.mesh);
   setup::add_resolution_notice(cell_mesh, config);
   if (settings.mode == "fluid")
     setup::add_edge_spacing_notice(cell_mesh, config.number("lattice.spacing_um"));

@@ -89,10 +89,11 @@ cases::CapillarySettings capillary_settings_from(const config::Config& config,
 
 cases::CapillaryPhysics capillary_physics_from(const config::Config& config,
                                                const CapillaryWall& wall,
+                                               const mesh::TriangleMesh& cell,
                                                const std::filesystem::path& run_directory) {
   return {*wall.shape,
           wall.source,
-          membrane_parameters_from(config),
+          cell_membrane_parameters_from(config, cell),
           fluid_parameters_from(config),
           coupling_parameters_from(config, run_directory),
           config::make_unit_converter(config),

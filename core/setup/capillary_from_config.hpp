@@ -34,9 +34,11 @@ CapillaryWall capillary_wall_from(const config::Config& config);
 cases::CapillarySettings capillary_settings_from(const config::Config& config,
                                                  const CapillaryWall& wall);
 
-// Membrane, fluid, coupling and units; failure dumps go to run_directory.
+// Membrane (for a cell of this mesh: cell_membrane_parameters_from), fluid, coupling and units;
+// failure dumps go to run_directory.
 cases::CapillaryPhysics capillary_physics_from(const config::Config& config,
                                                const CapillaryWall& wall,
+                                               const mesh::TriangleMesh& cell,
                                                const std::filesystem::path& run_directory);
 
 // Low-Reynolds time-scale compression (docs/physics.md, "Time-scale compression"). In Stokes

@@ -1,6 +1,7 @@
 #include "setup/membrane_from_config.hpp"
 
 #include <array>
+#include <cmath>
 #include <utility>
 
 namespace rbcsim::setup {
@@ -45,6 +46,23 @@ membrane::MembraneParameters membrane_parameters_from(const config::Config& conf
   parameters.kernel = config.string("membrane.kernel");
   parameters.viscosity_split = config.string("membrane.viscosity_split");
   parameters.viscosity_solve_tolerance = config.number("membrane.viscosity_solve_tolerance");
+  return parameters;
+}
+
+double network_stiffness_scale(const config::Config& config, std::size_t triangle_count) {
+  const auto calibrated =
+      static_cast<double>(config.integer("membrane.network_calibrated_triangle_count"));
+  if (calibrated == 0.0 || triangle_count == 0) return 1.0;
+  // Mean edge length ~ sqrt(area / triangle count) for meshes of the same cell.
+  return std::sqrt(calibrated / static_cast<double>(triangle_count));
+}
+
+membrane::MembraneParameters cell_membrane_parameters_from(const config::Config& config,
+                                                           const mesh::TriangleMesh& cell) {
+  auto parameters = membrane_parameters_from(config);
+  const double scale = network_stiffness_scale(config, cell.triangles.size());
+  parameters.k_link_kBT *= scale;
+  parameters.k_area_kBT *= scale;
   return parameters;
 }
 

@@ -233,7 +233,8 @@ std::vector<cases::SuspensionMorphology> suspension_morphologies_from(
       for (const auto& notice : cell.notices)
         import_notices->push_back(mix.names[m] + ": " + notice);
     }
-    morphologies.push_back({mix.names[m], std::move(cell.mesh), membrane_parameters_from(config)});
+    auto parameters = cell_membrane_parameters_from(config, cell.mesh);
+    morphologies.push_back({mix.names[m], std::move(cell.mesh), std::move(parameters)});
   }
   return morphologies;
 }

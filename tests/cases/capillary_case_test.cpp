@@ -45,7 +45,8 @@ CapillaryRun coarse_run(std::vector<std::string> assignments) {
   const auto wall = setup::capillary_wall_from(config);
   const auto settings = setup::capillary_settings_from(config, wall);
   const auto cell = setup::cell_mesh_from(config);
-  return run_capillary(cell.mesh, setup::capillary_physics_from(config, wall, {}), settings);
+  return run_capillary(cell.mesh, setup::capillary_physics_from(config, wall, cell.mesh, {}),
+                       settings);
 }
 
 TEST(CapillaryCase, CellAxisTurnsTheMeshZAxis) {
@@ -155,7 +156,7 @@ CapillaryRun compressed_run(std::vector<std::string> assignments) {
   const auto compression = setup::capillary_compression_from(config, wall);
   const auto simulated = setup::compressed_capillary_config(config, wall, compression);
   const auto cell = setup::cell_mesh_from(simulated);
-  auto run = run_capillary(cell.mesh, setup::capillary_physics_from(simulated, wall, {}),
+  auto run = run_capillary(cell.mesh, setup::capillary_physics_from(simulated, wall, cell.mesh, {}),
                            setup::capillary_settings_from(simulated, wall));
   setup::to_physical_units(run, compression);
   return run;

@@ -30,7 +30,8 @@ CapillaryRun run_with(const std::string& morphology, const std::vector<std::stri
   const auto wall = setup::capillary_wall_from(config);
   const auto settings = setup::capillary_settings_from(config, wall);
   const auto cell = setup::cell_mesh_from(config);
-  auto run = run_capillary(cell.mesh, setup::capillary_physics_from(config, wall, {}), settings);
+  auto run = run_capillary(cell.mesh, setup::capillary_physics_from(config, wall, cell.mesh, {}),
+                           settings);
   std::printf(
       "%s: transit %.6g s, DI initial %.4f peak %.4f at x = %.3g um (narrow %.3g-%.3g), final "
       "%.4f, Re %.4g, Ca %.4g, %zu steps, vertex cap on %zu steps\n",

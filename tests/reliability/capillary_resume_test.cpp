@@ -56,7 +56,7 @@ class CoarseCapillary {
         cell_(setup::cell_mesh_from(config_)) {}
 
   CapillaryRun run(const CapillaryConfigure& configure) const {
-    const auto physics = setup::capillary_physics_from(config_, wall_, {});
+    const auto physics = setup::capillary_physics_from(config_, wall_, cell_.mesh, {});
     auto settings = setup::capillary_settings_from(config_, wall_);
     const double dt_s = dt_s_of();
     settings.max_time_s = (static_cast<double>(kTotalSteps) - 0.5) * dt_s;
@@ -64,7 +64,9 @@ class CoarseCapillary {
     return run_capillary(cell_.mesh, physics, settings, configure);
   }
 
-  double dt_s_of() const { return setup::capillary_physics_from(config_, wall_, {}).units.dt_s(); }
+  double dt_s_of() const {
+    return setup::capillary_physics_from(config_, wall_, cell_.mesh, {}).units.dt_s();
+  }
 
  private:
   config::Config config_;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "cases/hexagonal_patch.hpp"
 #include "config/config.hpp"
 #include "mesh/echinocyte.hpp"
 #include "setup/cell_from_config.hpp"
@@ -45,6 +46,64 @@ TEST(MembraneFromConfig, MorphologyAndOverridesReachTheStruct) {
   EXPECT_EQ(stomatocyte.forces, (std::vector<std::string>{"link", "bend", "area", "volume"}));
   EXPECT_EQ(stomatocyte.distribution, "paper");
   EXPECT_DOUBLE_EQ(stomatocyte.viscosity_solve_tolerance, 3e-5);
+}
+
+namespace network_scaling {
+
+// Mean edge length of a closed mesh, um (each edge is counted by both its triangles).
+double mean_edge_um(const rbcsim::mesh::TriangleMesh& mesh) {
+  double sum_um = 0.0;
+  for (const auto& t : mesh.triangles) {
+    for (int i = 0; i < 3; ++i) {
+      sum_um += (mesh.positions_um[t[i]] - mesh.positions_um[t[(i + 1) % 3]]).norm();
+    }
+  }
+  return sum_um / (3.0 * static_cast<double>(mesh.triangles.size()));
+}
+
+// Shear and area moduli of a cell's network as the hexagonal patch at the cell's mean edge
+// measures them (the paper's calibration, section 2.4), for the k the cell runs with.
+rbcsim::cases::MembraneModuli cell_network_moduli(const std::string& morphology, int subdivisions,
+                                                  int calibrated_triangles) {
+  const auto config = resolve_config(
+      {.morphology = morphology,
+       .assignments = {
+           "mesh.method=parametric", "mesh.subdivisions=" + std::to_string(subdivisions),
+           "membrane.network_calibrated_triangle_count=" + std::to_string(calibrated_triangles)}});
+  const auto cell = rbcsim::setup::cell_mesh_from(config).mesh;
+  const auto parameters = rbcsim::setup::cell_membrane_parameters_from(config, cell);
+  const double edge_um = mean_edge_um(cell);
+  const auto stiffness = rbcsim::cases::measure_patch_stiffness(parameters, edge_um, 1e-4);
+  return rbcsim::cases::network_moduli(stiffness, parameters.k_link_kBT, parameters.k_area_kBT);
+}
+
+}  // namespace network_scaling
+
+// k_link and k_area calibrated on the 642-vertex cell (1280 triangles) give the 162-vertex cell
+// of the same morphology the same shear and area moduli; applied as given (0) they give it about
+// half, as the link and area terms are a stiffness per edge length.
+TEST(MembraneFromConfig, CalibratedTriangleCountKeepsTheNetworkModuliOnACoarserMesh) {
+  using network_scaling::cell_network_moduli;
+  for (const std::string morphology : {"discocyte", "stomatocyte-II"}) {
+    SCOPED_TRACE(morphology);
+    const auto fine = cell_network_moduli(morphology, 3, 1280);
+    const auto coarse = cell_network_moduli(morphology, 2, 1280);
+    const auto as_given = cell_network_moduli(morphology, 2, 0);
+    // The scale is sqrt(1280 / 320) = 2; the coarse mesh's mean edge is not exactly twice the
+    // fine one's (the subdivided triangles are projected onto the curved shape), which is the
+    // whole difference left: 3 %.
+    EXPECT_NEAR(coarse.shear_uN_per_m / fine.shear_uN_per_m, 1.0, 0.03);
+    EXPECT_NEAR(coarse.area_uN_per_m / fine.area_uN_per_m, 1.0, 0.03);
+    EXPECT_NEAR(as_given.shear_uN_per_m / fine.shear_uN_per_m, 0.5, 0.03);
+  }
+}
+
+TEST(MembraneFromConfig, NetworkStiffnessIsScaledOnlyWhenACalibratedCountIsSet) {
+  const auto config = resolve_config({.morphology = "stomatocyte-II"});
+  EXPECT_DOUBLE_EQ(rbcsim::setup::network_stiffness_scale(config, 1280), 1.0);
+  const auto calibrated = config.with("membrane.network_calibrated_triangle_count", 5120);
+  EXPECT_DOUBLE_EQ(rbcsim::setup::network_stiffness_scale(calibrated, 1280), 2.0);
+  EXPECT_DOUBLE_EQ(rbcsim::setup::network_stiffness_scale(calibrated, 5120), 1.0);
 }
 
 TEST(CellFromConfig, GeneratesTheMorphologyAtTheConfiguredLevel) {

@@ -20,6 +20,16 @@ void add_stiffnesses(OptionTable& table) {
                   "Link stiffness k_l (Eq. 6).")
       .at_least(0.0);
   table
+      .add_integer("membrane.network_calibrated_triangle_count", "", 0,
+                   "Triangle count of the mesh k_link and k_area are calibrated for, or 0. When "
+                   "set (Table 2's are for the paper's 2562-vertex cell: 5120), the cells of "
+                   "stretch, shear, capillary and suspensions scale both by their mesh's mean "
+                   "edge length over the calibrated one, sqrt(this / their triangle count), "
+                   "which keeps the calibrated shear and area moduli on a coarser or finer mesh, "
+                   "each morphology its own k; 0 applies them to any mesh as given (calibrate "
+                   "always fits the k of its own mesh).")
+      .at_least(0.0);
+  table
       .add_number("membrane.k_bend_kBT", "kBT", kMembraneDefaults.k_bend_kBT,
                   "Bending stiffness k_b (Eq. 7).")
       .at_least(0.0);
