@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cases/curvature_kinks.hpp"
+#include "cases/relaxation_methods.hpp"
 #include "cases/stretch_geometry.hpp"
 #include "common/errors.hpp"
 #include "common/format.hpp"
@@ -127,12 +128,13 @@ struct CurveProgress {
   bool force_started = false;   // its ramp, stop criterion and start record are set
   ForceRamp ramp;
   ForceRunStart start;
+  std::size_t warm_start_iterations = 0;  // of this force's warm start (0: ramped)
   std::vector<StretchPoint> points;  // of the forces before force_index
 };
 
 // A point as numbers, in this order, for the checkpoint; the force record likewise.
 constexpr std::size_t kPointValues = 12;
-constexpr std::size_t kForceValues = 9;
+constexpr std::size_t kForceValues = 10;
 
 std::vector<double> point_values(std::span<const StretchPoint> points) {
   std::vector<double> values;
@@ -181,7 +183,8 @@ class ProgressInCheckpoint final : public coupling::StopCriterion {
     archive.put(prefix + "force",
                 {static_cast<double>(p.force_index), p.force_started ? 1.0 : 0.0, p.ramp.from_pN,
                  p.ramp.to_pN, p.ramp.start_s, static_cast<double>(p.start.step),
-                 static_cast<double>(p.start.capped_steps), p.start.max_speed_lu, wall_s});
+                 static_cast<double>(p.start.capped_steps), p.start.max_speed_lu, wall_s,
+                 static_cast<double>(p.warm_start_iterations)});
     archive.put(prefix + "points", point_values(p.points));
   }
   void restore_state(StateArchive& archive, const std::string& prefix) override {
@@ -194,6 +197,7 @@ class ProgressInCheckpoint final : public coupling::StopCriterion {
     p.start.capped_steps = static_cast<std::size_t>(force[6]);
     p.start.max_speed_lu = force[7];
     p.start.wall_clock = started_seconds_ago(force[8]);
+    p.warm_start_iterations = static_cast<std::size_t>(force[9]);
     const auto values = archive.take(prefix + "points", std::nullopt);
     if (values.size() % kPointValues != 0) {
       throw InputError(archive.source(), prefix + "points: not whole points");
@@ -234,12 +238,36 @@ std::string not_steady(std::span<const StretchPoint> points, double max_time_s) 
          " s; raise stretch.fluid.max_time_per_force_s or loosen stretch.fluid.steady_*";
 }
 
-// The next force: the tweezers ramp to it from the force they reached, its stop criterion and
-// start record begin now.
+// stretch.fluid.warm_start: the membrane's equilibrium under force_pN from the shape reached
+// (the quasi-static relaxation, the same model and tweezers), put in place at rest. Its
+// iterations, or nothing (the shape left as it was) when it did not converge or met a force law's
+// limit on the way: the force is then ramped.
+std::optional<std::size_t> warm_start(CoupledSimulation& simulation, const StretchCell& cell,
+                                      const StretchSettings& settings, double force_pN) {
+  const auto& model = simulation.cell(0).model();
+  auto positions_um = simulation.positions_now_um(0);
+  const auto tweezers_pN = tweezer_forces_pN(model.vertex_count(), cell.patches, force_pN);
+  const auto relax = find_relaxation_method(settings.relaxation);
+  try {
+    const auto result = relax(model, positions_um, tweezers_pN, settings.relaxation_settings);
+    if (!result.converged) return std::nullopt;
+    simulation.move_cell(0, positions_um);
+    return result.iterations;
+  } catch (const RuntimeFailure&) {
+    return std::nullopt;
+  }
+}
+
+// The next force: the tweezers ramp to it from the force they reached (or stand at it, from a
+// warm start), its stop criterion and start record begin now.
 void start_force(const CoupledSimulation& simulation, double force_pN, double ramp_time_s,
-                 ForceStop& force_stop, CurveProgress& progress) {
+                 std::optional<std::size_t> warm_start_iterations, ForceStop& force_stop,
+                 CurveProgress& progress) {
   const double now_s = simulation.time_s();
-  progress.ramp = {progress.ramp.force_pN(now_s, ramp_time_s), force_pN, now_s};
+  const double from_pN =
+      warm_start_iterations ? force_pN : progress.ramp.force_pN(now_s, ramp_time_s);
+  progress.ramp = {from_pN, force_pN, now_s};
+  progress.warm_start_iterations = warm_start_iterations.value_or(0);
   progress.start = {.step = simulation.time_step(),
                     .capped_steps = simulation.capped_steps_per_cell().front()};
   force_stop.start(now_s);
@@ -318,9 +346,13 @@ StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const Stretch
   for (; progress.force_index < settings.forces_pN.size(); ++progress.force_index) {
     const double force_pN = settings.forces_pN[progress.force_index];
     if (!progress.force_started) {
-      start_force(*simulation, force_pN, fluid_settings.force_ramp_time_s, force_stop, progress);
+      const auto warm = fluid_settings.warm_start
+                            ? warm_start(*simulation, cell, settings, force_pN)
+                            : std::nullopt;
+      start_force(*simulation, force_pN, fluid_settings.force_ramp_time_s, warm, force_stop,
+                  progress);
     }
-    StretchPoint point{.force_pN = force_pN};
+    StretchPoint point{.force_pN = force_pN, .iterations = progress.warm_start_iterations};
     try {
       simulation->run();
       point.converged = force_stop.steady();

@@ -48,6 +48,12 @@ struct FluidStretchSettings {
   // a jump would pull the patch faster than the membrane around it can follow (a transient
   // strain beyond the force laws' limits at low viscosity).
   double force_ramp_time_s = 1e-3;
+  // Start each force from the membrane's equilibrium under it, found by the quasi-static
+  // relaxation (StretchSettings::relaxation) from the shape reached, instead of ramping to it:
+  // the coupled run then only has to settle the difference (the fluid-held volume, the lattice),
+  // and its steady state is still the criterion of the point. A relaxation that does not
+  // converge leaves the shape as it was and the force is ramped as without it.
+  bool warm_start = false;
   // Each force runs until both diameters are steady (coupling::stop_at_steady_state) ...
   coupling::SteadyStateTolerance steady{
       .relative_rate_per_s = 0.5, .check_interval_s = 2e-4, .consecutive_checks = 3};
@@ -90,7 +96,8 @@ struct StretchPoint {
   double axial_um = 0.0;
   double transverse_um = 0.0;
   bool converged = false;
-  std::size_t iterations = 0;  // relaxation iterations (quasi-static) at this force
+  // Relaxation iterations at this force: quasi-static, or the fluid mode's warm start.
+  std::size_t iterations = 0;
   std::size_t steps = 0;       // coupled time steps (fluid) at this force
   double time_s = 0.0;         // simulated time spent at this force (fluid)
   // The largest vertex speed at this force as a lattice Mach number u / c_s, and as a cell

@@ -83,6 +83,7 @@ nlohmann::ordered_json stretch_result_section(std::string_view mode,
       entry["simulated_time_s"] = point.time_s;
       entry["max_mach_number"] = point.max_mach_number;
       entry["max_reynolds_number"] = point.max_reynolds_number;
+      if (point.iterations > 0) entry["iterations"] = point.iterations;  // the warm start's
     } else {
       entry["iterations"] = point.iterations;
     }

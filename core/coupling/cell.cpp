@@ -257,6 +257,22 @@ void Cell::advance() {
   advancer_.advance(positions_lu_, velocities_lu_);
 }
 
+void Cell::move_to(std::span<const Vec3> positions_um, const LatticeFrame& frame) {
+  if (positions_um.size() != vertex_count()) {
+    throw std::invalid_argument("coupling: " + std::to_string(positions_um.size()) +
+                                " positions for a cell of " + std::to_string(vertex_count()) +
+                                " vertices");
+  }
+  for (std::size_t v = 0; v < vertex_count(); ++v) {
+    positions_lu_[v] = frame.to_lattice(positions_um[v]);
+  }
+  previous_positions_lu_ = positions_lu_;
+  positions_um_.assign(positions_um.begin(), positions_um.end());
+  std::fill(velocities_lu_.begin(), velocities_lu_.end(), Vec3::Zero());
+  std::fill(membrane_velocities_lu_.begin(), membrane_velocities_lu_.end(), Vec3::Zero());
+  advancer_.forget_history();
+}
+
 void Cell::save_state(StateArchive& archive, const std::string& prefix) const {
   archive.put(prefix + "positions_lu", positions_lu_);
   archive.put(prefix + "previous_positions_lu", previous_positions_lu_);

@@ -149,6 +149,12 @@ class Cell {
   // The stencil of the latest prepare_spread.
   const ibm::InterpolationStencil& stencil() const { return stencil_; }
 
+  // Puts the vertices at `positions_um` at rest, between steps, as if the cell had been added
+  // there: the previous positions are these, the velocities zero, the point advance without
+  // history (a shape found outside the coupled loop, the fluid stretch's warm start). Throws
+  // std::invalid_argument for a count mismatch.
+  void move_to(std::span<const Vec3> positions_um, const LatticeFrame& frame);
+
   // Checkpoints, between steps: positions (current and previous), the latest velocities and the
   // point-advance history, each array named `<prefix>...`. Forces are not saved: the next step
   // computes them from the positions.

@@ -265,6 +265,10 @@ std::vector<Vec3> CoupledSimulation::positions_now_um(std::size_t cell_index) co
   return positions_um;
 }
 
+void CoupledSimulation::move_cell(std::size_t cell_index, std::span<const Vec3> positions_um) {
+  cells_.at(cell_index).move_to(positions_um, frame_);
+}
+
 std::vector<std::size_t> CoupledSimulation::capped_steps_per_cell() const {
   std::vector<std::size_t> steps;
   for (const auto& monitor : force_cap_monitors_) steps.push_back(monitor.steps_with_capping());

@@ -238,6 +238,9 @@ class CoupledSimulation {
   const Cell& cell(std::size_t index) const { return cells_.at(index); }
   // Where a cell's vertices are now (after the latest step), in um: what observers measure.
   std::vector<Vec3> positions_now_um(std::size_t cell_index) const;
+  // Between steps: puts a cell's vertices at `positions_um`, at rest (Cell::move_to). Across
+  // processes every process must pass the same positions (each holds a copy of the cell).
+  void move_cell(std::size_t cell_index, std::span<const Vec3> positions_um);
   const units::UnitConverter& units() const { return units_; }
   const LatticeFrame& frame() const { return frame_; }
   const ibm::GridView& grid_view() const { return grid_; }

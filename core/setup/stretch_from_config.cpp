@@ -29,6 +29,7 @@ cases::FluidStretchSettings fluid_stretch_settings_from(const config::Config& co
   settings.coupling = coupling_parameters_from(config, {});
   settings.box_margin_um = config.number("stretch.fluid.box_margin_um");
   settings.force_ramp_time_s = config.number("stretch.fluid.force_ramp_time_s");
+  settings.warm_start = config.boolean("stretch.fluid.warm_start");
   settings.steady.relative_rate_per_s = config.number("stretch.fluid.steady_relative_rate_per_s");
   settings.steady.check_interval_s = config.number("stretch.fluid.steady_check_interval_s");
   settings.max_time_per_force_s = config.number("stretch.fluid.max_time_per_force_s");

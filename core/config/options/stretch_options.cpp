@@ -68,6 +68,12 @@ void add_fluid_options(OptionTable& table) {
                   "The tweezers move from one force to the next linearly over this time (a jump "
                   "strains the membrane at the patch beyond its force laws at low viscosity).")
       .at_least(0.0);
+  table.add_boolean(
+      "stretch.fluid.warm_start", fluid.warm_start,
+      "Start each force from the membrane's equilibrium under it (the relaxation of "
+      "stretch.quasi_static.*) instead of ramping to it: the coupled run "
+      "only settles the difference, and its steady state still makes the point. A relaxation "
+      "that does not converge leaves the shape and ramps the force.");
   table
       .add_number("stretch.fluid.steady_relative_rate_per_s", "1/s",
                   fluid.steady.relative_rate_per_s,
