@@ -30,15 +30,19 @@ TEST(BenchPaperCases, NamesInTheirOrderAllForTheThreeOfTheIssue) {
   EXPECT_THROW(parse_paper_case_names("stretch"), rbcsim::InputError);
 }
 
-// Only the capillary has a setting that brings back how it ran before the speed work.
-TEST(BenchPaperCases, TheCapillaryRunsUncompressedForTheComparison) {
+// The capillary and the Mills curve have a setting that brings back how they ran before the
+// speed work (uncompressed; each force ramped), the shear none.
+TEST(BenchPaperCases, TheCapillaryRunsUncompressedAndTheMillsCurveRampedForTheComparison) {
   const auto cases =
       rbcsim::cli::paper_cases(rbcsim::config::resolve_config({.morphology = "discocyte"}));
   for (const auto& paper_case : cases) {
-    const bool capillary = paper_case.arguments.front() == "capillary";
-    EXPECT_EQ(paper_case.before_arguments.empty(), !capillary) << paper_case.name;
-    if (capillary) {
+    const std::string& command = paper_case.arguments.front();
+    EXPECT_EQ(paper_case.before_arguments.empty(), command == "shear") << paper_case.name;
+    if (command == "capillary") {
       EXPECT_EQ(paper_case.before_arguments.back(), "capillary.time_scale_compression=false");
+    }
+    if (command == "stretch") {
+      EXPECT_EQ(paper_case.before_arguments.back(), "stretch.fluid.warm_start=false");
     }
   }
 }
