@@ -509,7 +509,35 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
   run.interrupted = end.interrupted;
   record_end();
   run.averages = averages_of(run.samples, run.time_s, settings.averaging_fraction);
+  run.averages.by_morphology =
+      morphology_averages(run.cell_samples, run.cell_morphologies, morphologies.size(), run.time_s,
+                          settings.averaging_fraction);
   return run;
+}
+
+std::vector<MorphologyAverages> morphology_averages(std::span<const SuspensionCellSample> samples,
+                                                    std::span<const std::size_t> cell_morphologies,
+                                                    std::size_t morphology_count, double end_s,
+                                                    double fraction) {
+  std::vector<MorphologyAverages> averages(morphology_count);
+  const double from_s = end_s * (1.0 - fraction);
+  for (const auto& sample : samples) {
+    // The same window as averages_of: the release (t = 0) is never a developed flow.
+    if (sample.time_s < from_s || sample.time_s == 0.0) continue;
+    auto& kind = averages.at(cell_morphologies[sample.cell]);
+    ++kind.cell_samples;
+    kind.radial_position_um += sample.radial_position_um;
+    kind.velocity_x_m_per_s += sample.velocity_x_m_per_s;
+    kind.deformation_index += sample.deformation_index;
+  }
+  for (auto& kind : averages) {
+    if (kind.cell_samples == 0) continue;
+    const double n = static_cast<double>(kind.cell_samples);
+    kind.radial_position_um /= n;
+    kind.velocity_x_m_per_s /= n;
+    kind.deformation_index /= n;
+  }
+  return averages;
 }
 
 double mean_cell_travel_um(std::span<const SuspensionCellSample> samples) {

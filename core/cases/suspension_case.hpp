@@ -100,6 +100,15 @@ struct SuspensionCellSample {
   double deformation_index = 0.0;
 };
 
+// Where the cells of one morphology were over the averaging window, averaged over their samples:
+// whether a kind marginates (radial position) or lags (axial velocity) in a mixture.
+struct MorphologyAverages {
+  std::size_t cell_samples = 0;
+  double radial_position_um = 0.0;
+  double velocity_x_m_per_s = 0.0;
+  double deformation_index = 0.0;
+};
+
 struct SuspensionAverages {
   std::size_t samples = 0;
   double relative_apparent_viscosity = 0.0;
@@ -108,6 +117,7 @@ struct SuspensionAverages {
   double discharge_hematocrit = 0.0;
   double cell_free_layer_um = 0.0;
   std::vector<double> volume_fraction_by_ring;  // the hematocrit profile
+  std::vector<MorphologyAverages> by_morphology;  // indexed as the morphologies
 };
 
 struct SuspensionRun {
@@ -183,5 +193,12 @@ std::vector<std::size_t> cell_counts_for(double hematocrit, double lumen_volume_
 // layer forms) only after the flow has carried it 25-50 tube diameters (Chien, Gompper & Fedosov,
 // arXiv:2003.09217); the report compares with Pries et al. only beyond that. 0 without samples.
 double mean_cell_travel_um(std::span<const SuspensionCellSample> samples);
+
+// The cells' samples from (1 - fraction) end_s on (the window of the flow's averages), averaged
+// per morphology (cell_morphologies: each cell's index among morphology_count).
+std::vector<MorphologyAverages> morphology_averages(std::span<const SuspensionCellSample> samples,
+                                                    std::span<const std::size_t> cell_morphologies,
+                                                    std::size_t morphology_count, double end_s,
+                                                    double fraction);
 
 }  // namespace rbcsim::cases

@@ -80,6 +80,28 @@ nlohmann::ordered_json hematocrit_profile_section(const SuspensionSettings& sett
           {"volume_fraction", std::vector<double>(volume_fraction.begin(), volume_fraction.end())}};
 }
 
+namespace {
+
+// Per morphology, where its cells were over the averaging window (null for a kind with none).
+nlohmann::ordered_json morphology_section(std::span<const std::string> morphology_names,
+                                          std::span<const MorphologyAverages> averages) {
+  nlohmann::ordered_json section = nlohmann::ordered_json::object();
+  for (std::size_t m = 0; m < morphology_names.size(); ++m) {
+    const auto* kind = m < averages.size() ? &averages[m] : nullptr;
+    if (kind == nullptr || kind->cell_samples == 0) {
+      section[morphology_names[m]] = nullptr;
+      continue;
+    }
+    section[morphology_names[m]] = {{"cell_samples", kind->cell_samples},
+                                    {"radial_position_um", kind->radial_position_um},
+                                    {"velocity_x_m_per_s", kind->velocity_x_m_per_s},
+                                    {"deformation_index", kind->deformation_index}};
+  }
+  return section;
+}
+
+}  // namespace
+
 nlohmann::ordered_json suspension_result_section(std::span<const std::string> morphology_names,
                                                  const SuspensionSettings& settings,
                                                  const SuspensionRun& run) {
@@ -114,6 +136,7 @@ nlohmann::ordered_json suspension_result_section(std::span<const std::string> mo
        a.discharge_hematocrit > 0.0 ? a.tube_hematocrit / a.discharge_hematocrit : 0.0},
       {"cell_free_layer_um", a.cell_free_layer_um},
       {"hematocrit_profile", hematocrit_profile_section(settings, a.volume_fraction_by_ring)},
+      {"by_morphology", morphology_section(morphology_names, a.by_morphology)},
       {"contact_law", contact::contact_law_name(settings.contact.law)},
       {"contact_force_pN", settings.contact.force_at_contact_pN},
       {"contact_range_um", settings.contact.range_um},
