@@ -315,13 +315,21 @@ class SuspensionRecord final : public coupling::StopCriterion {
   std::size_t rings_;
 };
 
+// The averaging window: the last `fraction` of the run, never the release (t = 0), which is a
+// packing and not a developed flow even when the window is the whole run.
+struct AveragingWindow {
+  double from_s;
+  explicit AveragingWindow(double end_s, double fraction) : from_s(end_s * (1.0 - fraction)) {}
+  [[nodiscard]] bool contains(double time_s) const { return time_s >= from_s && time_s != 0.0; }
+};
+
 SuspensionAverages averages_of(const std::vector<SuspensionSample>& samples, double end_s,
                                double fraction) {
   SuspensionAverages averages;
-  const double from_s = end_s * (1.0 - fraction);
+  const AveragingWindow window(end_s, fraction);
   std::vector<double> viscosities;
   for (const auto& sample : samples) {
-    if (sample.time_s < from_s || sample.time_s == 0.0) continue;
+    if (!window.contains(sample.time_s)) continue;
     ++averages.samples;
     viscosities.push_back(sample.relative_apparent_viscosity);
     averages.tube_hematocrit += sample.tube_hematocrit;
@@ -331,7 +339,7 @@ SuspensionAverages averages_of(const std::vector<SuspensionSample>& samples, dou
   if (averages.samples == 0) return averages;
   const double n = static_cast<double>(averages.samples);
   for (const auto& sample : samples) {
-    if (sample.time_s < from_s || sample.time_s == 0.0) continue;
+    if (!window.contains(sample.time_s)) continue;
     auto& profile = averages.volume_fraction_by_ring;
     profile.resize(sample.volume_fraction_by_ring.size(), 0.0);
     for (std::size_t ring = 0; ring < profile.size(); ++ring) {
@@ -520,10 +528,9 @@ std::vector<MorphologyAverages> morphology_averages(std::span<const SuspensionCe
                                                     std::size_t morphology_count, double end_s,
                                                     double fraction) {
   std::vector<MorphologyAverages> averages(morphology_count);
-  const double from_s = end_s * (1.0 - fraction);
+  const AveragingWindow window(end_s, fraction);
   for (const auto& sample : samples) {
-    // The same window as averages_of: the release (t = 0) is never a developed flow.
-    if (sample.time_s < from_s || sample.time_s == 0.0) continue;
+    if (!window.contains(sample.time_s)) continue;
     auto& kind = averages.at(cell_morphologies[sample.cell]);
     ++kind.cell_samples;
     kind.radial_position_um += sample.radial_position_um;
