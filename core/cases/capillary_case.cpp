@@ -426,7 +426,7 @@ CapillaryRun run_capillary(const mesh::TriangleMesh& cell_mesh, const CapillaryP
   try {
     if (!settle_fluid(*fluid, physics.coupling, settings, run)) return run;
   } catch (const RuntimeFailure& failure) {
-    run.failure = std::string("fluid alone: ") + failure.what();
+    run.stop_reason = run.failure = std::string("fluid alone: ") + failure.what();
     return run;
   }
   coupling::CoupledSimulation simulation(std::move(fluid), physics.units, physics.coupling,
@@ -465,7 +465,8 @@ CapillaryRun run_capillary(const mesh::TriangleMesh& cell_mesh, const CapillaryP
     return run;
   } catch (const RuntimeFailure& failure) {
     record_end();
-    run.failure = failure.what();
+    // The run stopped at the failure: say so where the stop reason is read (the summary line).
+    run.stop_reason = run.failure = failure.what();
     return run;
   }
   if (!run.passed) run.failure = not_passed_reason(run);

@@ -417,7 +417,8 @@ SuspensionEnd run_to_end(coupling::CoupledSimulation& simulation) {
     end.interrupted = true;
     end.stop_reason = end.failure = interrupted.what();
   } catch (const RuntimeFailure& failure) {
-    end.failure = failure.what();
+    // The run stopped at the failure: say so where the stop reason is read (the summary line).
+    end.stop_reason = end.failure = failure.what();
   }
   return end;
 }
