@@ -49,6 +49,7 @@ double dot(std::span<const Vec3> a, std::span<const Vec3> b) {
 }  // namespace
 
 void ImplicitMembraneFriction::prepare(const ibm::InterpolationStencil& stencil) {
+  correction_kept_ = false;
   slot_weight_.clear();
   slot_offsets_.assign(1, 0);
   slot_lattice_node_.clear();
@@ -103,31 +104,61 @@ void ImplicitMembraneFriction::add_momentum_to(lattice::FluidSolver& fluid) cons
 
 bool ImplicitMembraneFriction::add_previous_correction(std::span<Vec3> velocity) const {
   bool added = false;
-  std::size_t p = 0;
+  std::size_t p = 0, q = 0;
   for (std::size_t k = 0; k < nodes_.size(); ++k) {
     while (p < previous_nodes_.size() && previous_nodes_[p] < nodes_[k]) ++p;
     if (p == previous_nodes_.size()) break;
     if (previous_nodes_[p] != nodes_[k]) continue;
     velocity[k] += previous_correction_[p];
     added = true;
+    // Where the solve before that had the node too, the line through the two: c1 + (c1 - c2).
+    while (q < older_nodes_.size() && older_nodes_[q] < nodes_[k]) ++q;
+    if (q < older_nodes_.size() && older_nodes_[q] == nodes_[k]) {
+      velocity[k] += previous_correction_[p] - older_correction_[q];
+    }
   }
   return added;
 }
 
+void ImplicitMembraneFriction::keep_correction() {
+  // Once per prepare(): a process that solved adopts its own solution again (parallel runs).
+  if (!correction_kept_) {
+    older_nodes_.swap(previous_nodes_);
+    older_correction_.swap(previous_correction_);
+    correction_kept_ = true;
+  }
+  previous_nodes_ = nodes_;
+  previous_correction_.resize(nodes_.size());
+}
+
+namespace {
+
+// One solve's correction in a checkpoint: its nodes (as doubles, exact below 2^53) and values.
+void put_correction(StateArchive& archive, const std::string& name,
+                    std::span<const std::size_t> nodes, std::span<const Vec3> correction) {
+  archive.put(name + "_nodes", std::vector<double>(nodes.begin(), nodes.end()));
+  archive.put(name + "_correction_lu", correction);
+}
+
+void take_correction(StateArchive& archive, const std::string& name,
+                     std::vector<std::size_t>& nodes, std::vector<Vec3>& correction) {
+  const auto stored = archive.take(name + "_nodes", std::nullopt);
+  nodes.assign(stored.size(), 0);
+  for (std::size_t k = 0; k < stored.size(); ++k) nodes[k] = static_cast<std::size_t>(stored[k]);
+  correction.resize(stored.size());
+  archive.take(name + "_correction_lu", correction);
+}
+
+}  // namespace
+
 void ImplicitMembraneFriction::save_state(StateArchive& archive, const std::string& prefix) const {
-  archive.put(prefix + "friction_nodes",
-              std::vector<double>(previous_nodes_.begin(), previous_nodes_.end()));
-  archive.put(prefix + "friction_correction_lu", previous_correction_);
+  put_correction(archive, prefix + "friction", previous_nodes_, previous_correction_);
+  put_correction(archive, prefix + "friction_older", older_nodes_, older_correction_);
 }
 
 void ImplicitMembraneFriction::restore_state(StateArchive& archive, const std::string& prefix) {
-  const auto nodes = archive.take(prefix + "friction_nodes", std::nullopt);
-  previous_nodes_.assign(nodes.size(), 0);
-  for (std::size_t k = 0; k < nodes.size(); ++k) {
-    previous_nodes_[k] = static_cast<std::size_t>(nodes[k]);
-  }
-  previous_correction_.resize(nodes.size());
-  archive.take(prefix + "friction_correction_lu", previous_correction_);
+  take_correction(archive, prefix + "friction", previous_nodes_, previous_correction_);
+  take_correction(archive, prefix + "friction_older", older_nodes_, older_correction_);
 }
 
 std::size_t ImplicitMembraneFriction::solve(
@@ -161,13 +192,12 @@ std::span<const double> ImplicitMembraneFriction::adopt_solution(std::span<const
   }
   const std::size_t node_count = nodes_.size();
   momentum_.resize(node_count);
-  previous_correction_.resize(node_count);
+  keep_correction();
   for (std::size_t k = 0; k < node_count; ++k) {
     momentum_[k] = Vec3(values[3 * k], values[3 * k + 1], values[3 * k + 2]);
     const std::size_t c = 3 * (node_count + k);
     previous_correction_[k] = Vec3(values[c], values[c + 1], values[c + 2]);
   }
-  previous_nodes_ = nodes_;
   return values.subspan(count);
 }
 
@@ -302,8 +332,7 @@ std::size_t ImplicitMembraneFriction::solve_with_moments(
       direction[k] = preconditioned[k] + beta * direction[k];
     }
   }
-  previous_nodes_ = nodes_;
-  previous_correction_.resize(node_count);
+  keep_correction();
   for (std::size_t k = 0; k < node_count; ++k) {
     previous_correction_[k] = velocity[k] - fluid_velocity[k];
   }

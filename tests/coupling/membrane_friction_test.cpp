@@ -254,6 +254,33 @@ TEST(ImplicitMembraneFriction, StartsFromThePreviousCorrection) {
   }
 }
 
+// The fluid under the membrane speeding up steadily (u = (1 + n/2) u0 at solve n): the correction
+// u' - u grows by the same amount each solve, so the start extrapolated from the last two solves
+// is the third solve's solution to their tolerance, where the previous correction alone (the
+// second solve's start) is a third of it short.
+TEST(ImplicitMembraneFriction, ExtrapolatesItsStartFromTheLastTwoSolves) {
+  auto c = make_case(Vec3::Zero());
+  const auto friction = membrane::edge_friction_for(340.0, "central");
+  const auto network = membrane::EdgeNetwork::of(c.topology);
+  ImplicitMembraneFriction step;
+  step.prepare(c.stencil);
+  const std::vector<std::size_t> nodes(step.nodes().begin(), step.nodes().end());
+  std::vector<double> density(nodes.size());
+  std::vector<Vec3> momentum(nodes.size()), scaled(nodes.size());
+  c.fluid->pre_collision_moments(nodes, density, momentum);
+  std::vector<Vec3> velocities(c.sphere.vertex_count());
+  std::vector<std::size_t> iterations;
+  for (int n = 0; n < 3; ++n) {
+    step.prepare(c.stencil);  // each step's solve follows its prepare(), as in a run
+    for (std::size_t k = 0; k < nodes.size(); ++k) scaled[k] = (1.0 + 0.5 * n) * momentum[k];
+    iterations.push_back(step.solve_with_moments(c.sphere.positions_um, network, friction, 2.0,
+                                                 density, scaled, {}, velocities));
+  }
+  EXPECT_GT(iterations[1], 10u);
+  EXPECT_LT(4 * iterations[2], iterations[1])
+      << iterations[0] << ", " << iterations[1] << ", " << iterations[2];
+}
+
 // The backward-Euler step solved directly: (R + S^T K S) u' = R u assembled as a dense matrix over
 // the stencil's nodes and factorised. The iterative solve must give the same membrane velocities
 // S u' and the same momentum R (u' - u), to its tolerance.
