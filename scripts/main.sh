@@ -60,29 +60,30 @@ stage "calibrate the stretch (k_link fitted to Mills et al. 2004, glued beads) a
 physics_may_fail() { "$@" || [[ $? -eq 1 ]]; }
 
 stage "shear (three morphologies, 0/1000/2000 1/s, coarse setting)"
-# 642-vertex cells, so k_link doubled as in the capillary below (Table 2's modulus).
-shear_setting=(--set mesh.subdivisions=3 --set lattice.spacing_um=0.75
+# 642-vertex cells with Table 2's moduli, as in the capillary below: each morphology's k_link and
+# k_area scaled by the ratio of the paper's 2562-vertex cell's edge to theirs (x2; docs/physics.md).
+table2_moduli=(--set membrane.network_calibrated_triangle_count=5120)
+shear_setting=(--set mesh.subdivisions=3 --set lattice.spacing_um=0.75 "${table2_moduli[@]}"
                --rates 0,1000,2000 --max-strain 10 --threads "$threads")
-declare -A k_link_642=([discocyte]=14 [echinocyte-III]=22 [stomatocyte-II]=22)
 for morphology in discocyte echinocyte-III stomatocyte-II; do
-  cell=(--morphology "$morphology" --set membrane.k_link_kBT="${k_link_642[$morphology]}")
-  physics_may_fail "$rbcsim" shear "${shear_setting[@]}" "${cell[@]}" \
+  physics_may_fail "$rbcsim" shear "${shear_setting[@]}" --morphology "$morphology" \
     --output "$(fresh_run "shear-$morphology")"
-  physics_may_fail "$rbcsim" shear "${shear_setting[@]}" "${cell[@]}" \
+  physics_may_fail "$rbcsim" shear "${shear_setting[@]}" --morphology "$morphology" \
     --set membrane.forces=link,bend,area,volume --output "$(fresh_run "shear-$morphology-four-terms")"
 done
 
 stage "capillary (the validation tube: discocyte with and without F_ad/F_tc; three morphologies)"
 # 642-vertex cells on the paper's dx = 0.5 um with Table 2's moduli: their edges are twice as long
 # as the 2562-vertex cell's, and both the link and the local-area modulus go as k / L0 (the
-# hexagonal patch test of `rbcsim calibrate`), so k_link and k_area are doubled. Edges about one
-# lattice spacing long are what lets the cell through: the 2562-vertex cell on this lattice (edges
+# hexagonal patch test of `rbcsim calibrate`), so k_link and k_area are doubled (table2_moduli).
+# Edges about one lattice spacing long are what lets the cell through: the 2562-vertex cell on this
+# lattice (edges
 # dx / 2) fails at the area limit before the throat (docs/validation.md, capillary). The vertex cap
 # is 4 x 50 pN: a vertex here carries four paper vertices' share. The paper's validation tube (§3.3,
 # Fig. 13: 31.2 um, 6.75 um throat, Re 0.0643) with the discocyte, with and without F_ad/F_tc; then
 # the three morphologies through the three-morphology tube (§3.4: 42 um, 6.8 um throat, Re 0.04).
 # One thread per run, the five runs side by side.
-cell_setting=(--set mesh.subdivisions=3 --set membrane.k_area_kBT=10
+cell_setting=(--set mesh.subdivisions=3 "${table2_moduli[@]}"
               --set membrane.vertex_force_cap_pN=200 --set output.fluid_interval_s=0 --threads 1)
 capillary_pids=()
 run_capillary() {  # run name, then rbcsim capillary's options
@@ -90,12 +91,10 @@ run_capillary() {  # run name, then rbcsim capillary's options
     > "$output_dir/$1.txt" &
   capillary_pids+=($!)
 }
-run_capillary capillary-validation-discocyte --set membrane.k_link_kBT=14
-run_capillary capillary-validation-discocyte-four-terms --set membrane.k_link_kBT=14 \
-  --set membrane.forces=link,bend,area,volume
+run_capillary capillary-validation-discocyte
+run_capillary capillary-validation-discocyte-four-terms --set membrane.forces=link,bend,area,volume
 for morphology in discocyte echinocyte-III stomatocyte-II; do
-  run_capillary "capillary-$morphology" --geometry paper-morphology --morphology "$morphology" \
-    --set membrane.k_link_kBT="${k_link_642[$morphology]}"
+  run_capillary "capillary-$morphology" --geometry paper-morphology --morphology "$morphology"
 done
 for pid in "${capillary_pids[@]}"; do physics_may_fail wait "$pid"; done
 cat "$output_dir"/capillary-*.txt
