@@ -59,7 +59,7 @@ MembraneModel::MembraneModel(const mesh::TriangleMesh& mesh, ReferenceState refe
                                 std::to_string(topology_->vertex_count()) +
                                 " vertices), which the vertex form needs");
   }
-  const auto& kernel = find_membrane_kernel(parameters_.kernel);
+  find_membrane_kernel(parameters_.kernel);  // an unknown name fails before the terms are built
   auto enabled = [&](const ForceTermEntry& entry) {
     return std::find(parameters_.forces.begin(), parameters_.forces.end(), entry.name) !=
            parameters_.forces.end();
@@ -72,14 +72,30 @@ MembraneModel::MembraneModel(const mesh::TriangleMesh& mesh, ReferenceState refe
     if (!dissipative) kernel_term_count_ = term_names_.size();
   }
   if (has_dissipative_terms()) {
-    const auto names = std::span(term_names_).subspan(kernel_term_count_);
-    dissipative_terms_ = make_force_terms(names, parameters_, reference_);
     stencils_ = std::make_unique<MeshStencils>(MeshStencils::build(triangles_, *topology_));
   }
   if (std::find(term_names_.begin(), term_names_.end(), "viscosity") != term_names_.end()) {
     friction_ = edge_friction_for(parameters_.viscosity_Pa_s_um, parameters_.viscosity_split);
   }
-  kernel_ = kernel.make(*this);
+  build_reference_terms();
+}
+
+void MembraneModel::build_reference_terms() {
+  if (has_dissipative_terms()) {
+    const auto names = std::span(term_names_).subspan(kernel_term_count_);
+    dissipative_terms_ = make_force_terms(names, parameters_, reference_);
+  }
+  kernel_ = find_membrane_kernel(parameters_.kernel).make(*this);
+}
+
+void MembraneModel::set_reference(ReferenceState reference) {
+  require_reference_matches(reference, *topology_);
+  if (is_vertex_distribution(parameters_.distribution) &&
+      reference.vertex_offsets_um.size() != topology_->vertex_count()) {
+    throw std::invalid_argument("membrane reference state has no patch offset per vertex");
+  }
+  reference_ = std::move(reference);
+  build_reference_terms();
 }
 
 MembraneModel::~MembraneModel() = default;

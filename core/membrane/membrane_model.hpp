@@ -40,6 +40,11 @@ class MembraneModel {
   MembraneModel(MembraneModel&&) noexcept;
   MembraneModel& operator=(MembraneModel&&) noexcept;
 
+  // Replaces the stress-free reference (same connectivity), e.g. with a scaled one as a cell
+  // grows (scaled_reference); the triangles and topology stay where they are, the kernel is rebuilt
+  // (make workspaces again). Throws as the constructor does for a reference that does not fit.
+  void set_reference(ReferenceState reference);
+
   MembraneWorkspace make_workspace() const;
   MembraneForces make_forces() const;
 
@@ -79,6 +84,8 @@ class MembraneModel {
   const EdgeFrictionParameters& edge_friction() const { return friction_; }
 
  private:
+  // The parts built from the reference: the kernel and the dissipative terms.
+  void build_reference_terms();
   void add_dissipative_forces(std::span<const Vec3> positions_um,
                               std::span<const Vec3> velocities_um_per_s,
                               MembraneWorkspace& workspace, MembraneForces& forces,

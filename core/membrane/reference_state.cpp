@@ -1,5 +1,6 @@
 #include "membrane/reference_state.hpp"
 
+#include <stdexcept>
 #include <string>
 
 #include "common/errors.hpp"
@@ -77,6 +78,31 @@ ReferenceState capture_reference_state(std::span<const Vec3> positions_um,
         vertex_area_um2(topology, reference.triangle_areas_um2, v);
   }
   return reference;
+}
+
+ReferenceState scaled_reference(const ReferenceState& reference, double scale) {
+  if (!(scale > 0.0)) {
+    throw std::invalid_argument("scaled_reference: scale " + std::to_string(scale) +
+                                " is not positive");
+  }
+  const auto times = [](std::vector<double> values, double factor) {
+    for (double& value : values) value *= factor;
+    return values;
+  };
+  const double area = scale * scale;
+  ReferenceState scaled = reference;
+  scaled.edge_lengths_um = times(reference.edge_lengths_um, scale);
+  scaled.triangle_areas_um2 = times(reference.triangle_areas_um2, area);
+  scaled.triangle_perimeters_um = times(reference.triangle_perimeters_um, scale);
+  scaled.volume_um3 = reference.volume_um3 * area * scale;
+  scaled.area_um2 = reference.area_um2 * area;
+  scaled.mean_volume_gradient_um2 = reference.mean_volume_gradient_um2 * area;
+  scaled.signed_curvature_sum_um = reference.signed_curvature_sum_um * scale;
+  scaled.absolute_curvature_sum_um = reference.absolute_curvature_sum_um * scale;
+  scaled.vertex_offsets_um = times(reference.vertex_offsets_um, scale);
+  scaled.vertex_mean_curvatures_per_um =
+      times(reference.vertex_mean_curvatures_per_um, 1.0 / scale);
+  return scaled;
 }
 
 }  // namespace rbcsim::membrane

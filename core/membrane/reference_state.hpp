@@ -38,6 +38,13 @@ struct ReferenceState {
 // The mean of the reference edge lengths L0, um.
 double mean_reference_edge_um(const ReferenceState& reference);
 
+// The reference of the same mesh scaled by `scale` (> 0) about any point: lengths times scale,
+// areas times scale^2, the volume times scale^3, angles unchanged, curvatures divided by scale;
+// what capture_reference_state gives for the scaled positions, to round-off. A cell growing to its
+// size in the flow (CoupledSimulation::grow_cells) holds these on its way. Throws
+// std::invalid_argument for a scale that is not positive.
+ReferenceState scaled_reference(const ReferenceState& reference, double scale);
+
 // Throws InputError (source "stress-free mesh") for a degenerate triangle or a non-positive
 // enclosed volume (inward-facing triangles).
 ReferenceState capture_reference_state(std::span<const Vec3> positions_um,
