@@ -201,7 +201,19 @@ void Cell::hold_volume() {
   if (!volume_hold_) volume_hold_.emplace(model_.triangles(), model_.topology());
 }
 
+void Cell::dilate(double factor) {
+  const Vec3 centre = centroid_lu();
+  for (Vec3& position : positions_lu_) position = centre + factor * (position - centre);
+}
+
+void Cell::set_reference(membrane::ReferenceState reference, const LatticeFrame& frame) {
+  model_.set_reference(std::move(reference));
+  workspace_ = model_.make_workspace();
+  if (sub_spacing_drag_) use_sub_spacing_drag(drag_fluid_viscosity_sum_lu_, frame);
+}
+
 void Cell::use_sub_spacing_drag(double viscosity_sum_lu, const LatticeFrame& frame) {
+  drag_fluid_viscosity_sum_lu_ = viscosity_sum_lu;
   sub_spacing_drag_.emplace(model_.triangles(), model_.topology());
   // The elastic forces at rest, in lattice units at lattice positions.
   membrane::MembraneWorkspace workspace = model_.make_workspace();

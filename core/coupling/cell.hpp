@@ -128,6 +128,13 @@ class Cell {
   // From now on every advance holds the enclosed volume (volume_hold.hpp, `ibm.hold_volume`):
   // the vertices move with the velocities less a multiple of the volume gradient.
   void hold_volume();
+  // Growth in the flow (CoupledSimulation::grow_cells): the membrane's stress-free reference
+  // becomes `reference` (the model's connectivity), and the sub-spacing drag's rate is found
+  // again for it. Between steps.
+  void set_reference(membrane::ReferenceState reference, const LatticeFrame& frame);
+  // Scales the vertex positions by `factor` about their centroid, after an advance: a growing
+  // cell's own growth in the step, on top of the flow's motion.
+  void dilate(double factor);
   // From now on every advance adds the drag on the membrane's sub-spacing modes
   // (sub_spacing_drag.hpp, `ibm.sub_spacing_drag`) for fluids of viscosities summing to
   // `viscosity_sum_lu` (eta_out + eta_in, lattice units) on the two sides; raised, where the
@@ -185,6 +192,7 @@ class Cell {
   double drag_viscosity_sum_lu_ = 0.0;
   double drag_rate_per_step_ = 0.0;
   double drag_raised_by_ = 1.0;
+  double drag_fluid_viscosity_sum_lu_ = 0.0;  // the fluids' (use_sub_spacing_drag's argument)
 
   // Phase 5 from velocities_lu_ (or the friction step's velocities), with the volume hold.
   void advance();

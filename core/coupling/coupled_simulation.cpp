@@ -126,6 +126,12 @@ SubSpacingDragSummary CoupledSimulation::sub_spacing_drag_summary() const {
 std::size_t CoupledSimulation::add_cell(membrane::MembraneModel model,
                                         std::span<const Vec3> positions_um) {
   const std::size_t index = cells_.size();
+  if (growth_stage_count(growth_) > 0) {
+    // A growing cell starts at its first stage's reference; the model's own is its full size.
+    full_references_.push_back(model.reference());
+    model.set_reference(membrane::scaled_reference(
+        model.reference(), growth_stage_scale(growth_, growth_stage(growth_, 0))));
+  }
   Cell cell(std::move(model), positions_um, frame_, *advance_scheme_);
   if (parameters_.hold_volume) cell.hold_volume();
   if (parameters_.sub_spacing_drag) {
@@ -149,6 +155,40 @@ std::size_t CoupledSimulation::add_cell(membrane::MembraneModel model,
   cells_.push_back(std::move(cell));
   force_cap_monitors_.emplace_back();
   return index;
+}
+
+void CoupledSimulation::grow_cells(const CellGrowth& growth) {
+  require_valid(growth);
+  if (time_step_ != 0 || !cells_.empty()) {
+    throw std::invalid_argument("grow_cells: before the cells are added and the first step");
+  }
+  growth_ = growth;
+  applied_growth_stage_ = growth_stage(growth_, 0);
+}
+
+double CoupledSimulation::cell_scale() const {
+  return growth_stage_scale(growth_, growth_stage(growth_, time_step_));
+}
+
+void CoupledSimulation::apply_growth() {
+  if (growth_stage_count(growth_) == 0) return;
+  const std::size_t stage = growth_stage(growth_, time_step_);
+  if (stage != applied_growth_stage_) {
+    const bool grown = stage == growth_stage_count(growth_);
+    const double scale = growth_stage_scale(growth_, stage);
+    for_each_cell([&](std::size_t k) {
+      cells_[k].set_reference(
+          grown ? full_references_[k] : membrane::scaled_reference(full_references_[k], scale),
+          frame_);
+    });
+    applied_growth_stage_ = stage;
+  }
+}
+
+void CoupledSimulation::grow_cell_shapes() {
+  if (growth_stage_count(growth_) == 0 || time_step_ >= growth_.steps) return;
+  const double factor = growth_scale(growth_, time_step_ + 1) / growth_scale(growth_, time_step_);
+  for_each_cell([this, factor](std::size_t k) { cells_[k].dilate(factor); });
 }
 
 void CoupledSimulation::add_observer(Observer observer) {
@@ -418,6 +458,7 @@ bool CoupledSimulation::compute_owned_cell_forces() {
 
 void CoupledSimulation::spread_forces() {
   auto start = Clock::now();
+  apply_growth();
   compute_cell_forces();
   lap(start, phase_times_.membrane_s);
   add_contact_forces();
@@ -604,12 +645,14 @@ void CoupledSimulation::step() {
   apply_membrane_friction();
   lap(start, phase_times_.friction_s);
   advance_cells();
+  grow_cell_shapes();
   lap(start, phase_times_.advance_s);
   check_cells();
   lap(start, phase_times_.checks_s);
   forces_spread_ = false;
   ++time_step_;
   ++phase_times_.steps;
+  apply_growth();  // between steps the references are those of the next step (cell_scale())
   notify_due_observers();
   lap(start, phase_times_.observers_s);
 }
@@ -769,6 +812,7 @@ void CoupledSimulation::restore_state(StateArchive& archive) {
     stop_criteria_[i]->restore_state(archive, criterion_prefix(i));
   }
   forces_spread_ = false;
+  applied_growth_stage_.reset();  // the stage of the restored step, set at the next
   // The state restored was observed by the run that saved it.
   for (auto& registered : observers_) {
     registered.last_observed_step = time_step_;

@@ -51,6 +51,7 @@
 #include "contact/cell_repulsion.hpp"
 #include "contact/surface_repulsion.hpp"
 #include "coupling/cell.hpp"
+#include "coupling/cell_growth.hpp"
 #include "coupling/cytoplasm_indicator.hpp"
 #include "coupling/stability.hpp"
 #include "coupling/stop_criteria.hpp"
@@ -168,6 +169,17 @@ class CoupledSimulation {
   // Adds a cell whose vertices start at positions_um (one per vertex of the model); returns its
   // index. Throws InputError naming the cell if a vertex lies outside the domain or in a wall.
   std::size_t add_cell(membrane::MembraneModel model, std::span<const Vec3> positions_um);
+  // The cells added from now on start at growth.start_scale of their stress-free size and grow
+  // to it over the first growth.steps steps (cell_growth.hpp): add_cell scales each one's
+  // reference (the model's is its full size), which rises in stages at the start of the steps
+  // and is the model's own again once grown; while they grow, each step scales every cell's
+  // vertices about its centroid by the growth of the step (Cell::dilate), after the flow moved
+  // them, so that their shape keeps pace with the reference. Place the cells at their start size.
+  // Throws
+  // std::invalid_argument for an invalid growth, or when cells were added or steps taken before.
+  void grow_cells(const CellGrowth& growth);
+  // The scale of the cells' reference during the next step (1 without growth).
+  double cell_scale() const;
   // Throws std::invalid_argument for a duplicate name or an interval of 0.
   void add_observer(Observer observer);
   void add_external_force(ExternalForce force);
@@ -283,6 +295,10 @@ class CoupledSimulation {
   template <class Append, class Adopt>
   void share_computed_cells(std::span<const std::size_t> computed, std::size_t expected,
                             const char* what, const Append& append, const Adopt& adopt);
+  // grow_cells: the growth's stage of the coming step in every cell's reference (at the start
+  // of a step and between steps), and each cell's growth in this step (after the advance).
+  void apply_growth();
+  void grow_cell_shapes();
   void add_contact_forces();
   void build_contact_surfaces();
   void advance_fluid();
@@ -339,6 +355,11 @@ class CoupledSimulation {
   std::vector<RegisteredObserver> observers_;
   std::vector<std::unique_ptr<StopCriterion>> stop_criteria_;
   std::optional<CytoplasmIndicator> cytoplasm_;  // when the fluid has a viscosity contrast
+  // grow_cells: the growth, each cell's own (full-size) reference, and the stage its references
+  // hold (none: to be set at the next step, as after a restore).
+  CellGrowth growth_;
+  std::vector<membrane::ReferenceState> full_references_;
+  std::optional<std::size_t> applied_growth_stage_;
   bool forces_spread_ = false;
   std::size_t time_step_ = 0;
   StepPhaseTimes phase_times_;
