@@ -181,6 +181,9 @@ void run_suspension_command(const config::ConfigRequest& request, const config::
   // The settings are the simulated ones: the user's drive and duration are the physical ones.
   result["suspension"]["plasma_mean_velocity_m_per_s"] =
       config.number("suspension.plasma_mean_velocity_m_per_s");
+  if (settings.packing.scale < 1.0) {
+    result["suspension"]["growth_time_s"] = config.number("suspension.growth_time_s");
+  }
   result["suspension"]["time_scale"] = {
       {"compressed", compression.factor != 1.0},
       {"factor", compression.factor},

@@ -279,6 +279,10 @@ void run_sheared_suspension_command(const config::ConfigRequest& request,
     config::make_unit_converter(simulated).check_lattice_velocity(
         0.5 * rate * factor * rounded_um(box.gap_um, config.number("lattice.spacing_um")) * 1e-6,
         "shear.rates_per_s (" + format_number(rate) + " 1/s: the walls' speed, rate x gap / 2)");
+    // Physical times: the growth must be over before this rate's averages start.
+    cases::require_growth_before_window(
+        box.packing.scale, config.number("suspension.growth_time_s"),
+        (1.0 - box.averaging_fraction) * box.strain / rate, "suspension.strain");
   }
 
   const RunDirectory directory("shear", common, config);

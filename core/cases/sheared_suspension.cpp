@@ -433,6 +433,10 @@ ShearedSuspensionRun run_sheared_suspension(std::span<const SuspensionMorphology
                                             const SuspensionConfigure& configure) {
   validate_sheared(settings);
   require_contact_reaches_across_edges(morphologies, settings.contact.range_um);
+  require_growth_before_window(
+      settings.packing.scale, settings.growth_time_s,
+      (1.0 - settings.averaging_fraction) * settings.strain / settings.shear_rate_per_s,
+      "suspension.strain");
   const double dx_um = physics.units.dx_m() * 1e6;
   ShearBox box;
   box.wall_layers = 1;
@@ -465,6 +469,9 @@ ShearedSuspensionRun run_sheared_suspension(std::span<const SuspensionMorphology
   const Vec3 origin_um = -0.5 * dx_um * Vec3(box.nx - 1, box.ny - 1, box.nz - 1);
   coupling::CoupledSimulation simulation(shear_fluid(box, physics.fluid, "walls", rate_lu),
                                          physics.units, physics.coupling, origin_um);
+  if (packing.scale < 1.0) {
+    simulation.grow_cells(cell_growth_for(physics.units, packing.scale, settings.growth_time_s));
+  }
   for (std::size_t c = 0; c < cell_morphologies.size(); ++c) {
     const auto& morphology = morphologies[cell_morphologies[c]];
     simulation.add_cell(membrane::MembraneModel(morphology.mesh, morphology.membrane),

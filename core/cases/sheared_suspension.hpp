@@ -55,6 +55,7 @@ struct ShearedSuspensionSettings {
   double wall_repulsion_range_um = 0.5;
   contact::ContactParameters contact{5.0, 1.0, contact::ContactLaw::surface, 50.0};
   PackingSettings packing;
+  double growth_time_s = 0.005;        // of cells packed below their size (SuspensionSettings)
   std::vector<CellPose> placed_cells;  // instead of the packing (y = 0 at mid-gap)
 };
 

@@ -48,9 +48,34 @@ void validate(const SuspensionSettings& settings) {
   if (!(settings.averaging_fraction > 0.0 && settings.averaging_fraction <= 1.0)) {
     throw InputError("suspension.averaging_fraction", "must lie in (0, 1]");
   }
+  require_growth_before_window(settings.packing.scale, settings.growth_time_s,
+                               settings.duration_s * (1.0 - settings.averaging_fraction),
+                               "suspension.duration_s");
 }
 
 }  // namespace
+
+void require_growth_before_window(double packing_scale, double growth_time_s, double window_start_s,
+                                  const char* length_option) {
+  if (packing_scale >= 1.0) return;
+  require_positive_setting(growth_time_s, "suspension.growth_time_s");
+  if (growth_time_s > window_start_s) {
+    throw InputError("suspension.growth_time_s",
+                     format_number(growth_time_s) +
+                         " s: the cells packed at suspension.packing_scale " +
+                         format_number(packing_scale) +
+                         " would still be growing when the averaging window starts (" +
+                         format_number(window_start_s) + " s); shorten the growth, lengthen " +
+                         length_option + " or lower suspension.averaging_fraction");
+  }
+}
+
+coupling::CellGrowth cell_growth_for(const units::UnitConverter& units, double packing_scale,
+                                     double growth_time_s) {
+  if (packing_scale >= 1.0) return {};
+  const double steps = std::round(units.to_lattice(PhysicalUnit::time_s, growth_time_s));
+  return {packing_scale, std::max<std::size_t>(1, static_cast<std::size_t>(steps))};
+}
 
 void require_contact_reaches_across_edges(std::span<const SuspensionMorphology> morphologies,
                                           double range_um) {
@@ -190,6 +215,9 @@ class SuspensionRecorder {
     const double radius_um = 0.5 * settings_.tube_diameter_um;
     const double lumen_um3 = std::numbers::pi * radius_um * radius_um * settings_.tube_length_um;
 
+    // The cells' volume now: their reference's, while they grow.
+    const double scale = simulation.cell_scale();
+    const double volume_scale = scale * scale * scale;
     SuspensionSample sample;
     sample.time_s = simulation.time_s();
     sample.flow_rate_um3_per_s = flow_lu * um3_per_s;
@@ -200,8 +228,8 @@ class SuspensionRecorder {
       const auto& cell = simulation.cell(c);
       const double velocity_m_per_s = units.to_physical(PhysicalUnit::velocity_m_per_s,
                                                         mean_velocity(cell.velocities_lu()).x());
-      volume_um3 += cell_volumes_um3_[c];
-      volume_flux_um4_per_s += cell_volumes_um3_[c] * velocity_m_per_s * 1e6;
+      volume_um3 += volume_scale * cell_volumes_um3_[c];
+      volume_flux_um4_per_s += volume_scale * cell_volumes_um3_[c] * velocity_m_per_s * 1e6;
       const Vec3 centroid_um = simulation.frame().to_um(cell.centroid_lu());
       run_.cell_samples.push_back({sample.time_s, c, centroid_um, radial_um(centroid_um),
                                    velocity_m_per_s, deformation_index(cell.positions_lu())});
@@ -480,6 +508,9 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
 
   coupling::CoupledSimulation simulation(std::move(fluid), physics.units, physics.coupling,
                                          tube.grid_um.origin_um);
+  if (packing.scale < 1.0) {
+    simulation.grow_cells(cell_growth_for(physics.units, packing.scale, settings.growth_time_s));
+  }
   std::vector<double> cell_volumes_um3;
   for (std::size_t c = 0; c < cell_morphologies.size(); ++c) {
     const auto& morphology = morphologies[cell_morphologies[c]];

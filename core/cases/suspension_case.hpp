@@ -53,6 +53,9 @@ struct SuspensionSettings {
   // vertex may carry.
   contact::ContactParameters contact{5.0, 1.0, contact::ContactLaw::surface, 50.0};
   PackingSettings packing;
+  // Cells packed below their size (packing.scale < 1) grow to it over this time from the release
+  // (coupling/cell_growth.hpp); it must end before the averaging window starts.
+  double growth_time_s = 0.005;
   // Cells placed by hand (suspension.cells): one pose per cell, instead of the packing.
   std::vector<CellPose> placed_cells;
   double fluid_tolerance = 1e-6;
@@ -154,6 +157,16 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
                              std::span<const std::size_t> cell_morphologies,
                              const SuspensionPhysics& physics, const SuspensionSettings& settings,
                              const SuspensionConfigure& configure = {});
+
+// Cells packed below their size (packing_scale < 1) grow in the flow: InputError naming
+// suspension.growth_time_s for a growth that is not positive or that ends after
+// `window_start_s`, when the averages start (`length_option` names what sets the run's length).
+void require_growth_before_window(double packing_scale, double growth_time_s, double window_start_s,
+                                  const char* length_option);
+// The growth of cells packed at `packing_scale` over `growth_time_s` (at least one step), in the
+// run's steps; none at a scale of 1.
+coupling::CellGrowth cell_growth_for(const units::UnitConverter& units, double packing_scale,
+                                     double growth_time_s);
 
 // Throws InputError naming suspension.contact_range_um when the range is shorter than the longest
 // membrane edge of a morphology: a vertex could pass between another cell's vertices

@@ -123,6 +123,8 @@ nlohmann::ordered_json suspension_result_section(std::span<const std::string> mo
       {"morphologies", morphology_names},
       {"packed_hematocrit", run.packed_hematocrit},
       {"packing_iterations", run.packing_iterations},
+      {"packing_scale", settings.packing.scale},
+      {"growth_time_s", settings.packing.scale < 1.0 ? settings.growth_time_s : 0.0},
       {"plasma_mean_velocity_m_per_s", settings.plasma_mean_velocity_m_per_s},
       {"pseudo_shear_rate_per_s", run.pseudo_shear_rate_per_s},
       {"pressure_gradient_Pa_per_m", run.pressure_gradient_Pa_per_m},

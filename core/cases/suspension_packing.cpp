@@ -204,10 +204,11 @@ class Packer {
     }
   }
 
-  // At full size: the first problem of cells placed by hand (closer than the gap to another
-  // cell, to their own image across a period, or to a wall), or nothing.
+  // At the packing's scale (full size unless they grow in the flow): the first problem of cells
+  // placed by hand (closer than the gap to another cell, to their own image across a period, or
+  // to a wall), or nothing.
   std::optional<std::string> placement_problem() {
-    place(1.0);
+    place(settings_.scale);
     const auto box = periodic_box(space_);
     std::size_t offset = 0;
     for (std::size_t c = 0; c < cells_.size(); ++c) {
@@ -286,6 +287,7 @@ class Packer {
       volume_um3 += prototypes_[cell.prototype].volume_um3;
     }
     packing.hematocrit = volume_um3 / lumen_volume_um3();
+    packing.scale = settings_.scale;
     return packing;
   }
 
@@ -464,16 +466,19 @@ Packing place_cells_in_tube(std::span<const mesh::TriangleMesh> prototypes,
 Packing pack_cells(std::span<const mesh::TriangleMesh> prototypes,
                    std::span<const std::size_t> cell_prototypes, const PackingSpace& space,
                    const PackingSettings& settings) {
+  if (!(settings.scale > 0.0 && settings.scale <= 1.0)) {
+    throw std::invalid_argument("pack_cells: scale outside (0, 1]");
+  }
   Packer packer(prototypes, cell_prototypes, space, settings);
-  double scale = kStartScale;
+  double scale = std::min(kStartScale, settings.scale);
   double clear_scale = 0.0;  // the largest at which no cell overlapped
   std::size_t iteration = 0;
   for (; iteration < settings.max_iterations; ++iteration) {
     throw_if_interrupted();  // packing a large suspension takes a while
     if (packer.push_apart(scale)) continue;
     clear_scale = scale;
-    if (scale == 1.0) break;
-    scale = std::min(1.0, scale + kScaleStep);
+    if (scale == settings.scale) break;
+    scale = std::min(settings.scale, scale + kScaleStep);
   }
   if (iteration == settings.max_iterations) {
     throw InputError(
@@ -486,12 +491,15 @@ Packing pack_cells(std::span<const mesh::TriangleMesh> prototypes,
             std::to_string(cell_prototypes.size()) + " cells at full size: " +
             format_number(packer.hematocrit_at(1.0)) + "); lower the hematocrit or enlarge the " +
             (std::holds_alternative<PackingSlab>(space) ? "gap" : "tube") +
+            (settings.scale == 1.0 ? std::string(", pack smaller cells that grow to full size in "
+                                                 "the flow (suspension.packing_scale)")
+                                   : std::string()) +
             (settings.orientation == PackingOrientation::random
                  ? std::string(", or start the cells lined up along the axis "
                                "(suspension.packing_orientation=axial)")
                  : std::string()));
   }
-  packer.place(1.0);
+  packer.place(settings.scale);
   auto packing = packer.result(iteration);
   // The packing moved a surface through another one.
   require_no_pierced_cells(packing, prototypes, cell_prototypes, space, false);

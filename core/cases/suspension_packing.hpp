@@ -8,7 +8,8 @@
 //      cell_gap_um, the contact's range, across the space's periodic axes; a vertex closer than
 //      wall_gap_um to a wall) push each other apart as rigid bodies, each moved along its net
 //      push and turned by its net torque, a small fraction of the gap per iteration; once no
-//      cell overlaps, all cells grow by kScaleStep, until they are full size and clear.
+//      cell overlaps, all cells grow by kScaleStep, until they are full size and clear (or clear
+//      at PackingSettings::scale, from which they grow to full size in the flow).
 //
 // The hematocrit reached is measured from the placed meshes' own volumes over the space's volume
 // (the tube's pi R^2 L, the slab's gap x length x width). Cells that cannot be made to clear at
@@ -60,12 +61,18 @@ struct PackingSettings {
   unsigned seed = 1;
   std::size_t max_iterations = 40000;
   PackingOrientation orientation = PackingOrientation::random;
+  // The size the cells are packed at, a fraction of their own (suspension.packing_scale): below 1
+  // they grow to full size in the flow (coupling/cell_growth.hpp), to reach hematocrits that
+  // cells at their resting size cannot be packed to.
+  double scale = 1.0;
 };
 
 // The cells as placed: one vertex array per cell, in the order of `cell_prototypes`.
 struct Packing {
   std::vector<std::vector<Vec3>> positions_um;
-  double hematocrit = 0.0;  // sum of the placed meshes' volumes / (pi R^2 L)
+  // Sum of the cells' volumes at full size / (pi R^2 L): the hematocrit once grown.
+  double hematocrit = 0.0;
+  double scale = 1.0;  // of their size the cells are placed at (PackingSettings::scale)
   std::size_t iterations = 0;
 };
 

@@ -151,6 +151,8 @@ void read_interactions(const config::Config& config, Settings& settings) {
                                      : cases::PackingOrientation::random;
   settings.packing.max_iterations =
       static_cast<std::size_t>(config.integer("suspension.packing_max_iterations"));
+  settings.packing.scale = config.number("suspension.packing_scale");
+  settings.growth_time_s = config.number("suspension.growth_time_s");
 }
 
 }  // namespace
@@ -262,8 +264,9 @@ config::Config compressed_suspension_config(const config::Config& config, double
           .with("suspension.plasma_mean_velocity_m_per_s",
                 config.number("suspension.plasma_mean_velocity_m_per_s") * s)
           .with("membrane.viscosity_Pa_s_um", config.number("membrane.viscosity_Pa_s_um") / s);
-  for (const char* time : {"suspension.duration_s", "suspension.sample_interval_s",
-                           "output.membrane_interval_s", "output.fluid_interval_s"}) {
+  for (const char* time :
+       {"suspension.duration_s", "suspension.sample_interval_s", "suspension.growth_time_s",
+        "output.membrane_interval_s", "output.fluid_interval_s"}) {
     compressed = compressed.with(time, config.number(time) / s);
   }
   return compressed;

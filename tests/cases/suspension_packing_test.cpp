@@ -199,6 +199,30 @@ TEST(SuspensionPacking, AnAxialStartPacksANarrowTubeRandomTurnsDoNot) {
   }
 }
 
+// Nine discocytes in a 10 x 30 um tube (H_T 0.36, the tube hematocrit of H_D 0.45 there), 1 um
+// from each other and from the wall: lined up along the axis they need about 3.6 um of it each
+// (2.6 um thick plus the gap), more than the 30 um hold, so at full size they do not come clear;
+// at 0.85 of their size they do, and then grow in the flow (coupling/cell_growth.hpp). The
+// packing reports the hematocrit of the grown cells.
+TEST(SuspensionPacking, CellsPackedSmallerReachAHematocritFullSizeOnesCannot) {
+  const std::vector<mesh::TriangleMesh> prototypes{shipped_mesh("discocyte")};
+  const std::vector<std::size_t> cells(9, 0);
+  const PackingTube tube{5.0, 30.0};
+  PackingSettings settings{1.0, 1.0, 1, 1500, PackingOrientation::axial};
+  EXPECT_THROW((void)pack_cells_in_tube(prototypes, cells, tube, settings), InputError);
+  settings.scale = 0.85;
+  const auto packing = pack_cells_in_tube(prototypes, cells, tube, settings);
+  expect_clear(packing, tube, settings);
+  EXPECT_EQ(packing.scale, 0.85);
+  const double full_um3 = 9.0 * mesh::enclosed_volume_um3(prototypes[0]);
+  EXPECT_NEAR(packing.hematocrit, full_um3 / (std::numbers::pi * 25.0 * 30.0), 1e-12);
+  EXPECT_GT(packing.hematocrit, 0.35);
+  // Each cell is its prototype at 0.85 of its size, turned and moved.
+  const auto& first = packing.positions_um[0];
+  EXPECT_NEAR((first[0] - first[1]).norm(),
+              0.85 * (prototypes[0].positions_um[0] - prototypes[0].positions_um[1]).norm(), 1e-9);
+}
+
 TEST(SuspensionPacking, SurfaceContainsItsInsideOnly) {
   const auto sphere = mesh::unit_icosphere(3);
   EXPECT_TRUE(surface_contains(sphere.positions_um, sphere.triangles, Vec3(0.1, 0.2, -0.3)));

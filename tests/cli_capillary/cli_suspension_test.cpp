@@ -169,6 +169,45 @@ TEST(CliSuspension, CellsOvertakingEachOtherInTubeFlowNeverInterpenetrate) {
   EXPECT_EQ(*std::max_element(pierced.begin(), pierced.end()), 0.0);
 }
 
+// Cells packed at 0.8 of their size grow to it in the flow (suspension.packing_scale): the tube
+// hematocrit starts at 0.8^3 of the packed one, reaches it once they have grown, and the averages
+// (after the growth) are the full-size cells'. On dx 0.5 um with the wall's push over 1 um, as
+// the validation's tubes (on dx 1 um the paper's membrane fails in this tube within 1 ms, grown
+// or not).
+TEST(CliSuspension, CellsPackedSmallerGrowToTheirSizeInTheFlow) {
+  const ScratchDirectory scratch;
+  const auto run_dir = scratch.path() / "run";
+  const auto result = run_rbcsim(
+      "capillary --geometry tube --diameter-um 10 --length-um 12 --set mesh.subdivisions=2 "
+      "--set mesh.method=parametric --set suspension.contact_range_um=1.75 "
+      "--set suspension.wall_repulsion_range_um=1 --set suspension.duration_s=1.2e-3 "
+      "--set suspension.sample_interval_s=1e-4 --set output.membrane_interval_s=0 "
+      "--set output.fluid_interval_s=0 --hematocrit 0.2 --set suspension.packing_scale=0.8 "
+      "--set suspension.growth_time_s=5e-4 --threads 2 --json --output '" +
+          run_dir.string() + "'",
+      scratch.path());
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto suspension = printed_run_result(result, run_dir, "capillary")["suspension"];
+  EXPECT_EQ(suspension["packing_scale"], 0.8);
+  EXPECT_EQ(suspension["growth_time_s"], 5e-4);  // physical, as asked (the run's is compressed)
+  // The mean of samples equal to the packed hematocrit, to its round-off.
+  EXPECT_DOUBLE_EQ(suspension["tube_hematocrit"].get<double>(),
+                   suspension["packed_hematocrit"].get<double>());
+  EXPECT_EQ(suspension["samples_with_pierced_cells"], 0);
+  const auto flow = rbcsim::io::read_csv_file(run_dir / "suspension_timeseries.csv");
+  const auto time_s = flow.numbers("time_s");
+  const auto tube_hematocrit = flow.numbers("tube_hematocrit");
+  const double packed = suspension["packed_hematocrit"].get<double>();
+  ASSERT_GE(time_s.size(), 10u);
+  EXPECT_NEAR(tube_hematocrit.front(), 0.512 * packed, 1e-12);
+  for (std::size_t row = 1; row < time_s.size(); ++row) {
+    EXPECT_GE(tube_hematocrit[row], tube_hematocrit[row - 1]) << "row " << row;
+    if (time_s[row] >= 5e-4 + 1e-9) {
+      EXPECT_EQ(tube_hematocrit[row], packed) << "row " << row;
+    }
+  }
+}
+
 // Two cells placed by hand (suspension.cells) instead of packed: the run takes them where they
 // are put, names their morphologies, and measures its hematocrit from them.
 TEST(CliSuspension, RunsCellsPlacedByHand) {
@@ -298,6 +337,9 @@ TEST(CliSuspension, BadInputExitsTwoWithOneLineAndNoRunDirectory) {
            {"--hematocrit 0.2 --set suspension.contact_range_um=0.5",
             "suspension.contact_range_um"},
            {"--hematocrit 0.2 --orientations 3", "capillary.orientations"},
+           {"--hematocrit 0.2 --set suspension.packing_scale=0.8 "
+            "--set suspension.growth_time_s=1.5e-4",
+            "suspension.growth_time_s"},
            {"--hematocrit 0.2 --set 'suspension.cells=[{\"morphology\": \"discocyte\", "
             "\"centre_um\": [2, 0, 0]}]'",
             "suspension.cells"},

@@ -114,6 +114,22 @@ void add_suspension_options(OptionTable& table) {
                    "push-apart iterations.")
       .at_least(1);
   table
+      .add_number("suspension.packing_scale", "", kSuspensionDefaults.packing.scale,
+                  "The size the cells are packed at, a fraction of their own: below 1 they grow "
+                  "to full size in the flow over suspension.growth_time_s (each cell scaled about "
+                  "its centroid every step, its membrane's reference in stages of 0.1 %), for "
+                  "hematocrits a packing of cells at their resting shape cannot reach. The "
+                  "hematocrit reported is the grown cells'.")
+      .at_least(0.5)
+      .at_most(1.0);
+  table
+      .add_number("suspension.growth_time_s", "s", kSuspensionDefaults.growth_time_s,
+                  "With suspension.packing_scale below 1: the physical time from the release over "
+                  "which the cells grow to full size; it must end before the averaging window "
+                  "starts, and last several of a cell's relaxation times (about 1 ms in plasma), "
+                  "so that the walls and the other cells can turn and shape the growing cells.")
+      .above(0.0);
+  table
       .add_number("suspension.max_reynolds_number", "", 0.1,
                   "Time-scale compression (as capillary.time_scale_compression): plasma viscosity "
                   "divided and velocity multiplied by one factor, at equal capillary number, up to "
