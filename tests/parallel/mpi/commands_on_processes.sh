@@ -157,13 +157,16 @@ fi
 
 # The physiological preset: membrane viscosity (each cell's implicit friction step over fluid nodes
 # on several processes) and a viscous cytoplasm (per-node viscosity classes): one cell sheared, a
-# two-cell suspension in the tube, one cell stretched.
+# two-cell suspension in the tube (its cells packed at 0.99 of their size and grown in the flow:
+# ten reference stages and a dilation every step; on dx 1 um a larger growth pushes a cell packed
+# 0.5 um from the staircase wall into it), one cell stretched.
 # shellcheck disable=SC2086
 same_as_one physiological_shear "2" shear $coarse_cell --set shear.max_reynolds_number=0.4 \
   --set shear.width_diameters=1.6 --set shear.gap_diameters=2 --max-strain 1 --rates 500 \
   --set lattice.block_planes=2 --preset physiological
 # shellcheck disable=SC2086
-same_as_one physiological_tube "2" $tube --set output.format=vtk --preset physiological
+same_as_one physiological_tube "2" $tube --set output.format=vtk --preset physiological \
+  --set suspension.packing_scale=0.99 --set suspension.growth_time_s=1e-4
 # shellcheck disable=SC2086
 same_as_one physiological_stretch "2" stretch --set mesh.subdivisions=2 --set mesh.method=parametric \
   --set lattice.spacing_um=1 --set stretch.fluid.kinematic_viscosity_m2_per_s=3.7e-7 \
