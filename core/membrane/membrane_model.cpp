@@ -34,6 +34,17 @@ void require_reference_matches(const ReferenceState& reference,
   }
 }
 
+// The per-vertex form reads a patch offset per vertex.
+void require_vertex_offsets(const ReferenceState& reference, const mesh::MeshTopology& topology,
+                            const std::string& distribution) {
+  if (is_vertex_distribution(distribution) &&
+      reference.vertex_offsets_um.size() != topology.vertex_count()) {
+    throw std::invalid_argument("membrane reference state has no patch offset per vertex (" +
+                                std::to_string(topology.vertex_count()) +
+                                " vertices), which the vertex form needs");
+  }
+}
+
 }  // namespace
 
 MembraneModel::MembraneModel(const mesh::TriangleMesh& stress_free_mesh,
@@ -53,12 +64,7 @@ MembraneModel::MembraneModel(const mesh::TriangleMesh& mesh, ReferenceState refe
   require_reference_matches(reference_, *topology_);
   require_known_term_names(parameters_.forces);
   require_known_distribution(parameters_.distribution);  // reject an unknown name even if unused
-  if (is_vertex_distribution(parameters_.distribution) &&
-      reference_.vertex_offsets_um.size() != topology_->vertex_count()) {
-    throw std::invalid_argument("membrane reference state has no patch offset per vertex (" +
-                                std::to_string(topology_->vertex_count()) +
-                                " vertices), which the vertex form needs");
-  }
+  require_vertex_offsets(reference_, *topology_, parameters_.distribution);
   find_membrane_kernel(parameters_.kernel);  // an unknown name fails before the terms are built
   auto enabled = [&](const ForceTermEntry& entry) {
     return std::find(parameters_.forces.begin(), parameters_.forces.end(), entry.name) !=
@@ -90,10 +96,7 @@ void MembraneModel::build_reference_terms() {
 
 void MembraneModel::set_reference(ReferenceState reference) {
   require_reference_matches(reference, *topology_);
-  if (is_vertex_distribution(parameters_.distribution) &&
-      reference.vertex_offsets_um.size() != topology_->vertex_count()) {
-    throw std::invalid_argument("membrane reference state has no patch offset per vertex");
-  }
+  require_vertex_offsets(reference, *topology_, parameters_.distribution);
   reference_ = std::move(reference);
   build_reference_terms();
 }
