@@ -6,7 +6,8 @@
 //      PackingOrientation), and they are spread apart rigidly (below);
 //   2. then, repeatedly: overlapping cells (two vertices of different cells closer than
 //      cell_gap_um, the contact's range, across the space's periodic axes; a vertex closer than
-//      wall_gap_um to a wall) push each other apart as rigid bodies, each moved along its net
+//      wall_gap_um to a wall, or, for cells that grow in the flow, through the wall once grown)
+//      push each other apart as rigid bodies, each moved along its net
 //      push and turned by its net torque, a small fraction of the gap per iteration; once no
 //      cell overlaps, all cells grow by kScaleStep, until they are full size and clear (or clear
 //      at PackingSettings::scale, from which they grow to full size in the flow).
@@ -57,7 +58,7 @@ enum class PackingOrientation { random, axial };
 
 struct PackingSettings {
   double cell_gap_um = 0.75;  // no two vertices of different cells closer
-  double wall_gap_um = 0.5;   // no vertex closer to the wall
+  double wall_gap_um = 0.5;   // no vertex closer to the wall (at `scale`; grown, none through it)
   unsigned seed = 1;
   std::size_t max_iterations = 40000;
   PackingOrientation orientation = PackingOrientation::random;

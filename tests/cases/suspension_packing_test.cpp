@@ -23,6 +23,23 @@ mesh::TriangleMesh shipped_mesh(const std::string& name) {
   return mesh::import_mesh(std::string(RBCSIM_SOURCE_DIR) + "/meshes/" + name + "_n3.stl").mesh;
 }
 
+// The least distance from the wall of any vertex once every cell of `packing` (all of
+// `prototype`) has grown to full size about its solid centroid, as they do in the flow.
+double grown_wall_clearance_um(const Packing& packing, const mesh::TriangleMesh& prototype,
+                               const PackingTube& tube) {
+  double clearance_um = tube.radius_um;
+  for (const auto& positions : packing.positions_um) {
+    mesh::TriangleMesh placed = prototype;
+    placed.positions_um = positions;
+    const Vec3 centre = mesh::solid_centroid_um(placed);
+    for (const Vec3& p : positions) {
+      const Vec3 grown = centre + (p - centre) / packing.scale;
+      clearance_um = std::min(clearance_um, tube.radius_um - std::hypot(grown.y(), grown.z()));
+    }
+  }
+  return clearance_um;
+}
+
 // Every vertex pair of different cells (nearest periodic image along x) at least the gap apart,
 // every vertex at least the wall gap inside the wall.
 void expect_clear(const Packing& packing, const PackingTube& tube,
@@ -217,10 +234,28 @@ TEST(SuspensionPacking, CellsPackedSmallerReachAHematocritFullSizeOnesCannot) {
   const double full_um3 = 9.0 * mesh::enclosed_volume_um3(prototypes[0]);
   EXPECT_NEAR(packing.hematocrit, full_um3 / (std::numbers::pi * 25.0 * 30.0), 1e-12);
   EXPECT_GT(packing.hematocrit, 0.35);
+  // Grown to full size about their centres, as they will in the flow, no vertex is through the
+  // wall (where the flow's wall repulsion could not bring it back).
+  EXPECT_GE(grown_wall_clearance_um(packing, prototypes[0], tube), -1e-9);
   // Each cell is its prototype at 0.85 of its size, turned and moved.
   const auto& first = packing.positions_um[0];
   EXPECT_NEAR((first[0] - first[1]).norm(),
               0.85 * (prototypes[0].positions_um[0] - prototypes[0].positions_um[1]).norm(), 1e-9);
+}
+
+// Cells packed at 0.8 of their size with a 0.25 um wall gap: grown about their centres by 1/0.8
+// in the flow, a discocyte's rim (3.9 um out) moves ~1 um outward, four times the gap, so a cell
+// the packing left at the gap would reach through the wall. The packing keeps every grown vertex
+// inside the lumen, and the wall gap at the packed size.
+TEST(SuspensionPacking, CellsPackedSmallerStayInsideTheWallOnceGrown) {
+  const std::vector<mesh::TriangleMesh> prototypes{shipped_mesh("discocyte")};
+  const std::vector<std::size_t> cells(6, 0);
+  const PackingTube tube{5.0, 30.0};
+  PackingSettings settings{0.5, 0.25, 3, 4000, PackingOrientation::random};
+  settings.scale = 0.8;
+  const auto packing = pack_cells_in_tube(prototypes, cells, tube, settings);
+  expect_clear(packing, tube, settings);
+  EXPECT_GE(grown_wall_clearance_um(packing, prototypes[0], tube), -1e-9);
 }
 
 TEST(SuspensionPacking, SurfaceContainsItsInsideOnly) {
