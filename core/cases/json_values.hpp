@@ -31,6 +31,13 @@ inline nlohmann::ordered_json phase_ms_per_step_json(const coupling::StepPhaseTi
   auto phases = nlohmann::ordered_json::object();
   for (const auto& [phase, ms] : coupling::ms_per_step_by_phase(times)) phases[phase] = ms;
   phases["timed_steps"] = times.steps;
+  // With membrane viscosity: the conjugate-gradient iterations of an implicit friction solve, on
+  // average (what its time is made of; docs/performance.md).
+  if (times.friction_solves > 0) {
+    phases["friction_solves"] = times.friction_solves;
+    phases["friction_iterations_per_solve"] =
+        static_cast<double>(times.friction_iterations) / static_cast<double>(times.friction_solves);
+  }
   return phases;
 }
 

@@ -509,10 +509,20 @@ void CoupledSimulation::apply_membrane_friction() {
     return;
   }
   const lattice::FluidSolver& fluid = *fluid_;
+  if (!fluid.populations_natural()) return;  // Cell::solve_membrane_friction
   for_each_cell([this, &fluid](std::size_t k) {
     cells_[k].solve_membrane_friction(fluid, frame_, time_step_ + 1);
   });
   for (const Cell& cell : cells_) cell.add_membrane_friction(*fluid_);
+  count_friction_iterations();
+}
+
+void CoupledSimulation::count_friction_iterations() {
+  for (const Cell& cell : cells_) {
+    if (!cell.has_membrane_friction()) continue;
+    ++phase_times_.friction_solves;
+    phase_times_.friction_iterations += cell.friction_iterations();
+  }
 }
 
 // Across processes every process holds every cell, but the nodes under a cell lie on several of
@@ -593,6 +603,7 @@ void CoupledSimulation::apply_distributed_membrane_friction() {
   for (const std::size_t k : with_friction) {
     distributed_->add_momentum_on_own_nodes(nodes[k], cells_[k].membrane_friction_momentum());
   }
+  count_friction_iterations();
 }
 
 void CoupledSimulation::advance_cells() {

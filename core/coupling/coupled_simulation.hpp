@@ -136,6 +136,11 @@ struct StepPhaseTimes {
   double checks_s = 0.0;     // phase 6, the stability checks
   double observers_s = 0.0;  // observers (output, measurements)
   std::size_t steps = 0;
+  // The implicit friction's solves (one per cell with membrane viscosity every second step with
+  // the AA kernel) and their conjugate-gradient iterations: what the friction phase's time is made
+  // of.
+  std::size_t friction_solves = 0;
+  std::size_t friction_iterations = 0;
 
   double total_s() const;
 };
@@ -304,6 +309,8 @@ class CoupledSimulation {
   void advance_fluid();
   void apply_membrane_friction();
   void apply_distributed_membrane_friction();
+  // Adds the solves just made and their iterations to phase_times_ (StepPhaseTimes).
+  void count_friction_iterations();
   // fail() for the lowest-indexed cell whose entry holds a RuntimeFailure; other exceptions go on
   // up (a bug, which stops the run). Returns if there is none.
   void fail_on_first(std::span<const std::exception_ptr> failures_by_cell);
