@@ -480,7 +480,7 @@ ShearedSuspensionRun run_sheared_suspension(std::span<const SuspensionMorphology
   const double half_gap_um = 0.5 * run.gap_um;
   add_suspension_walls(
       simulation, morphologies, cell_morphologies,
-      {settings.wall_repulsion_pN_per_um2, settings.wall_repulsion_range_um},
+      {settings.wall_repulsion_pN_per_um2, settings.wall_repulsion_range_um, settings.wall_law},
       [half_gap_um](const Vec3& position) { return slab_wall_distance(position, half_gap_um); });
   simulation.set_cell_contact(settings.contact, "suspension.contact_force_pN");
   const double interval_s = settings.sample_interval_strain / settings.shear_rate_per_s;

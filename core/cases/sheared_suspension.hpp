@@ -53,6 +53,7 @@ struct ShearedSuspensionSettings {
   double averaging_fraction = 0.5;  // of the run, at its end
   double wall_repulsion_pN_per_um2 = 20.0;
   double wall_repulsion_range_um = 0.5;
+  WallLaw wall_law = WallLaw::pressure;  // suspension.wall_law (wall_repulsion.hpp)
   contact::ContactParameters contact{5.0, 1.0, contact::ContactLaw::surface, 50.0};
   PackingSettings packing;
   double growth_time_s = 0.005;        // of cells packed below their size (SuspensionSettings)

@@ -428,7 +428,7 @@ void add_suspension_walls(coupling::CoupledSimulation& simulation,
   for (const auto& morphology : morphologies) {
     repulsions.push_back({per_um2.force_at_wall_pN * mesh::surface_area_um2(morphology.mesh) /
                               static_cast<double>(morphology.mesh.vertex_count()),
-                          per_um2.range_um});
+                          per_um2.range_um, per_um2.law});
   }
   const std::vector<std::size_t> kinds(cell_morphologies.begin(), cell_morphologies.end());
   simulation.add_external_force([repulsions, kinds, wall](std::size_t c, const coupling::Cell& cell,
@@ -520,7 +520,7 @@ SuspensionRun run_suspension(std::span<const SuspensionMorphology> morphologies,
   }
   add_suspension_walls(
       simulation, morphologies, cell_morphologies,
-      {settings.wall_repulsion_pN_per_um2, settings.wall_repulsion_range_um},
+      {settings.wall_repulsion_pN_per_um2, settings.wall_repulsion_range_um, settings.wall_law},
       [radius_um](const Vec3& position) { return tube_wall_distance(position, radius_um); });
   simulation.set_cell_contact(settings.contact, "suspension.contact_force_pN");
   const std::size_t sample_steps = interval_steps(physics.units, settings.sample_interval_s);

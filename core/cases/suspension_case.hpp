@@ -45,6 +45,7 @@ struct SuspensionSettings {
   std::size_t profile_rings = 10;   // of the hematocrit profile (suspension_profile.hpp)
   double wall_repulsion_pN_per_um2 = 20.0;
   double wall_repulsion_range_um = 0.5;
+  WallLaw wall_law = WallLaw::pressure;  // suspension.wall_law (wall_repulsion.hpp)
   // The surface law, acting over 1 um: the width of the phi2 kernel at dx 0.5 um, so that the
   // fluid can still part two membranes where the push is strong (docs/physics.md, "Suspensions":
   // over 0.75 um, within the kernel, the pushed membranes folded, and the vertex law let them

@@ -1,5 +1,6 @@
 #include "cases/wall_repulsion.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -16,6 +17,17 @@ WallDistance slab_wall_distance(const Vec3& position_um, double half_gap_um) {
   return {half_gap_um + position_um.y(), Vec3::UnitY()};
 }
 
+double wall_push_pN(const WallRepulsion& repulsion, double distance_um) {
+  const double range = repulsion.range_um;
+  if (distance_um >= range) return 0.0;
+  if (repulsion.law == WallLaw::barrier) {
+    const double excess = range / std::max(distance_um, 0.01 * range) - 1.0;
+    return 0.25 * repulsion.force_at_wall_pN * excess * excess;
+  }
+  const double closeness = 1.0 - std::max(distance_um, 0.0) / range;
+  return repulsion.force_at_wall_pN * closeness * closeness;
+}
+
 void add_wall_repulsion(std::span<const Vec3> positions_um,
                         const std::function<WallDistance(const Vec3& position_um)>& wall,
                         const WallRepulsion& repulsion, std::span<Vec3> forces_pN) {
@@ -26,8 +38,7 @@ void add_wall_repulsion(std::span<const Vec3> positions_um,
   for (std::size_t v = 0; v < positions_um.size(); ++v) {
     const auto [distance_um, inward] = wall(positions_um[v]);
     if (distance_um >= repulsion.range_um) continue;
-    const double closeness = 1.0 - std::max(distance_um, 0.0) / repulsion.range_um;
-    forces_pN[v] += repulsion.force_at_wall_pN * closeness * closeness * inward;
+    forces_pN[v] += wall_push_pN(repulsion, distance_um) * inward;
   }
 }
 

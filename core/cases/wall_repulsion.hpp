@@ -6,7 +6,13 @@
 // acts only within `range_um` of the wall, along the direction away from it:
 //     F = force_at_wall_pN * (1 - d / range_um)^2,   d the distance to the wall,
 // zero with zero slope at d = range_um, force_at_wall_pN at contact (and beyond, inside the wall,
-// which the stability checks refuse anyway).
+// which the stability checks refuse anyway): WallLaw::pressure. Its push is finite at contact, so
+// a cell pressed outward harder than that (in a crowded tube, squeezed between two neighbours
+// whose surface contact grows without bound as they close in) goes through the wall. The barrier
+// (WallLaw::barrier) is the cells' own surface contact law against the wall:
+//     F = (force_at_wall_pN / 4) (range_um / d - 1)^2,   d floored at range_um / 100,
+// equal to the pressure law at d = range_um / 2, weaker beyond it, and growing as (range_um / d)^2
+// closer in, without a cap (a cap would again let a squeezed cell through).
 #pragma once
 
 #include <functional>
@@ -16,10 +22,17 @@
 
 namespace rbcsim::cases {
 
+// The wall's force law (suspension.wall_law; the header above).
+enum class WallLaw { pressure, barrier };
+
 struct WallRepulsion {
-  double force_at_wall_pN = 0.0;  // 0: none
+  double force_at_wall_pN = 0.0;  // 0: none; the pressure law's push at contact
   double range_um = 0.0;
+  WallLaw law = WallLaw::pressure;
 };
+
+// The push of the wall on one vertex at distance distance_um from it (pN; 0 beyond the range).
+double wall_push_pN(const WallRepulsion& repulsion, double distance_um);
 
 // Where a point lies in a walled space: its distance to the nearest wall (negative beyond it) and
 // the unit direction away from that wall, into the space (zero where there is none, on a tube's

@@ -57,5 +57,34 @@ TEST(WallRepulsion, PushesOffTheNearerOfTwoFlatWalls) {
   EXPECT_LT((forces[3] - Vec3(1.0, 0.0, 0.0)).norm(), 1e-15);
 }
 
+// The barrier: the pressure law's push at half the range, (r/d - 1)^2 of a quarter of its contact
+// push elsewhere, nothing at and beyond the range, and floored at a hundredth of the range.
+TEST(WallRepulsion, TheBarrierAgreesWithThePressureLawAtHalfItsRangeAndGrowsCloserIn) {
+  const WallRepulsion pressure{8.0, 0.5};
+  const WallRepulsion barrier{8.0, 0.5, WallLaw::barrier};
+  EXPECT_NEAR(wall_push_pN(barrier, 0.25), wall_push_pN(pressure, 0.25), 1e-12);  // 2 pN
+  EXPECT_NEAR(wall_push_pN(barrier, 0.1), 2.0 * 16.0, 1e-12);                     // (5 - 1)^2 = 16
+  EXPECT_NEAR(wall_push_pN(barrier, 0.4), 2.0 * 0.0625, 1e-12);                   // (1.25 - 1)^2
+  EXPECT_EQ(wall_push_pN(barrier, 0.5), 0.0);
+  EXPECT_NEAR(wall_push_pN(barrier, -0.2), 2.0 * 99.0 * 99.0, 1e-9);
+  EXPECT_NEAR(wall_push_pN(barrier, 0.004), 2.0 * 99.0 * 99.0, 1e-9);
+}
+
+// A vertex pressed outward by 40 pN (a cell squeezed between neighbours whose contact push is
+// capped at 50 pN a vertex): the pressure law's 8 pN at contact cannot hold it, so it reaches the
+// wall; the barrier holds it where the push balances, r / (1 + sqrt(40 / 2)) from the wall.
+TEST(WallRepulsion, TheBarrierHoldsAVertexThePressureLawLetsThrough) {
+  const double squeeze_pN = 40.0;
+  const auto resting_distance = [&](const WallRepulsion& repulsion) {
+    double d = 0.5;  // relaxed towards the wall while the squeeze wins: the wall's push only grows
+    for (int i = 0; i < 200000 && d > 0.0; ++i) {
+      d -= 1e-6 * (squeeze_pN - wall_push_pN(repulsion, d));
+    }
+    return d;
+  };
+  EXPECT_LE(resting_distance({8.0, 0.5}), 0.0);
+  EXPECT_NEAR(resting_distance({8.0, 0.5, WallLaw::barrier}), 0.5 / (1.0 + std::sqrt(20.0)), 1e-6);
+}
+
 }  // namespace
 }  // namespace rbcsim::cases

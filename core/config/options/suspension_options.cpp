@@ -96,6 +96,12 @@ void add_suspension_options(OptionTable& table) {
                   "The tube wall's push on the membrane at contact, as a pressure (as "
                   "capillary.wall_repulsion_pN_per_um2).")
       .at_least(0.0);
+  table.add_choice("suspension.wall_law", {"pressure", "barrier"}, "pressure",
+                   "The wall's force law: pressure (wall_repulsion_pN_per_um2 (1 - d/r)^2 over "
+                   "a vertex's share of the area, finite at contact) or barrier (the cells' "
+                   "surface contact law against the wall: a quarter of that (r/d - 1)^2, the "
+                   "same at d = r/2, growing without a cap closer in, so that a cell squeezed "
+                   "between neighbours cannot be pushed through the wall; docs/physics.md).");
   table
       .add_number("suspension.wall_repulsion_range_um", "um",
                   kSuspensionDefaults.wall_repulsion_range_um,
