@@ -129,6 +129,7 @@ struct CurveProgress {
   ForceRamp ramp;
   ForceRunStart start;
   std::size_t warm_start_iterations = 0;  // of this force's warm start (0: ramped)
+  WarmStart warm_start = WarmStart::off;  // how this force started
   std::vector<StretchPoint> points;  // of the forces before force_index
 };
 
@@ -186,6 +187,10 @@ class ProgressInCheckpoint final : public coupling::StopCriterion {
                  static_cast<double>(p.start.capped_steps), p.start.max_speed_lu, wall_s,
                  static_cast<double>(p.warm_start_iterations)});
     archive.put(prefix + "points", point_values(p.points));
+    // How each force started: this one's, then each point's.
+    std::vector<double> starts{static_cast<double>(p.warm_start)};
+    for (const auto& point : p.points) starts.push_back(static_cast<double>(point.warm_start));
+    archive.put(prefix + "warm_starts", std::move(starts));
   }
   void restore_state(StateArchive& archive, const std::string& prefix) override {
     const auto force = archive.take(prefix + "force", kForceValues);
@@ -203,6 +208,13 @@ class ProgressInCheckpoint final : public coupling::StopCriterion {
       throw InputError(archive.source(), prefix + "points: not whole points");
     }
     p.points = points_from(values);
+    const auto starts = archive.take(prefix + "warm_starts", p.points.size() + 1);
+    const auto start_of = [](double value) {
+      return static_cast<WarmStart>(static_cast<int>(value));
+    };
+    p.warm_start = start_of(starts[0]);
+    for (std::size_t i = 0; i < p.points.size(); ++i)
+      p.points[i].warm_start = start_of(starts[i + 1]);
   }
 
  private:
@@ -239,35 +251,40 @@ std::string not_steady(std::span<const StretchPoint> points, double max_time_s) 
 }
 
 // stretch.fluid.warm_start: the membrane's equilibrium under force_pN from the shape reached
-// (the quasi-static relaxation, the same model and tweezers), put in place at rest. Its
-// iterations, or nothing (the shape left as it was) when it did not converge or met a force law's
-// limit on the way: the force is then ramped.
-std::optional<std::size_t> warm_start(CoupledSimulation& simulation, const StretchCell& cell,
-                                      const StretchSettings& settings, double force_pN) {
+// (the quasi-static relaxation, the same model and tweezers), put in place at rest, with its
+// iterations; or, when it did not converge or met a force law's limit on the way, which of the
+// two (the shape left as it was: the force is then ramped).
+struct WarmStartResult {
+  WarmStart outcome = WarmStart::off;
+  std::size_t iterations = 0;
+};
+
+WarmStartResult warm_start(CoupledSimulation& simulation, const StretchCell& cell,
+                           const StretchSettings& settings, double force_pN) {
   const auto& model = simulation.cell(0).model();
   auto positions_um = simulation.positions_now_um(0);
   const auto tweezers_pN = tweezer_forces_pN(model.vertex_count(), cell.patches, force_pN);
   const auto relax = find_relaxation_method(settings.relaxation);
   try {
     const auto result = relax(model, positions_um, tweezers_pN, settings.relaxation_settings);
-    if (!result.converged) return std::nullopt;
+    if (!result.converged) return {WarmStart::not_converged, result.iterations};
     simulation.move_cell(0, positions_um);
-    return result.iterations;
+    return {WarmStart::converged, result.iterations};
   } catch (const RuntimeFailure&) {
-    return std::nullopt;
+    return {WarmStart::force_law_limit, 0};
   }
 }
 
 // The next force: the tweezers ramp to it from the force they reached (or stand at it, from a
 // warm start), its stop criterion and start record begin now.
 void start_force(const CoupledSimulation& simulation, double force_pN, double ramp_time_s,
-                 std::optional<std::size_t> warm_start_iterations, ForceStop& force_stop,
-                 CurveProgress& progress) {
+                 const WarmStartResult& warm, ForceStop& force_stop, CurveProgress& progress) {
   const double now_s = simulation.time_s();
-  const double from_pN =
-      warm_start_iterations ? force_pN : progress.ramp.force_pN(now_s, ramp_time_s);
+  const bool warm_started = warm.outcome == WarmStart::converged;
+  const double from_pN = warm_started ? force_pN : progress.ramp.force_pN(now_s, ramp_time_s);
   progress.ramp = {from_pN, force_pN, now_s};
-  progress.warm_start_iterations = warm_start_iterations.value_or(0);
+  progress.warm_start_iterations = warm_started ? warm.iterations : 0;
+  progress.warm_start = warm.outcome;
   progress.start = {.step = simulation.time_step(),
                     .capped_steps = simulation.capped_steps_per_cell().front()};
   force_stop.start(now_s);
@@ -348,11 +365,13 @@ StretchRun run_fluid_stretch(const membrane::MembraneModel& model, const Stretch
     if (!progress.force_started) {
       const auto warm = fluid_settings.warm_start
                             ? warm_start(*simulation, cell, settings, force_pN)
-                            : std::nullopt;
+                            : WarmStartResult{};
       start_force(*simulation, force_pN, fluid_settings.force_ramp_time_s, warm, force_stop,
                   progress);
     }
-    StretchPoint point{.force_pN = force_pN, .iterations = progress.warm_start_iterations};
+    StretchPoint point{.force_pN = force_pN,
+                       .iterations = progress.warm_start_iterations,
+                       .warm_start = progress.warm_start};
     try {
       simulation->run();
       point.converged = force_stop.steady();

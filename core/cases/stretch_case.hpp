@@ -91,6 +91,11 @@ struct StretchCell {
 // Throws InputError for an unknown contact rule or patches that overlap.
 StretchCell prepare_stretch_cell(mesh::TriangleMesh mesh, const ContactSettings& contact);
 
+// How the fluid mode started a force (stretch.fluid.warm_start): ramped with the warm start off;
+// from the quasi-static equilibrium the warm start found; or ramped because the warm start did not
+// converge or met a force law's limit on the way (a fallback, reported).
+enum class WarmStart { off, converged, not_converged, force_law_limit };
+
 struct StretchPoint {
   double force_pN = 0.0;
   double axial_um = 0.0;
@@ -107,6 +112,7 @@ struct StretchPoint {
   double residual_force_pN = 0.0;  // largest net vertex force at the end
   std::size_t force_cap_hits = 0;  // vertex force cap triggers while relaxing (a safety net)
   double wall_time_s = 0.0;
+  WarmStart warm_start = WarmStart::off;  // fluid mode
 };
 
 // What an observer sees after each force: the point, the shape reached, the membrane forces

@@ -1,5 +1,6 @@
 #include "cases/stretch_output.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include "cases/json_values.hpp"
@@ -67,6 +68,20 @@ nlohmann::ordered_json mills_comparison_json(const StretchComparison& comparison
           {"point_count", comparison.point_count}};
 }
 
+std::string_view warm_start_name(WarmStart start) {
+  switch (start) {
+    case WarmStart::off:
+      return "ramped";
+    case WarmStart::converged:
+      return "warm";
+    case WarmStart::not_converged:
+      return "ramped: the warm start did not converge";
+    case WarmStart::force_law_limit:
+      return "ramped: the warm start met a force law's limit";
+  }
+  return "ramped";
+}
+
 nlohmann::ordered_json stretch_result_section(std::string_view mode,
                                               std::span<const std::string> force_terms,
                                               std::span<const StretchPoint> points,
@@ -84,6 +99,7 @@ nlohmann::ordered_json stretch_result_section(std::string_view mode,
       entry["max_mach_number"] = point.max_mach_number;
       entry["max_reynolds_number"] = point.max_reynolds_number;
       if (point.iterations > 0) entry["iterations"] = point.iterations;  // the warm start's
+      if (point.warm_start != WarmStart::off) entry["start"] = warm_start_name(point.warm_start);
     } else {
       entry["iterations"] = point.iterations;
     }
@@ -92,10 +108,20 @@ nlohmann::ordered_json stretch_result_section(std::string_view mode,
     entry["wall_time_s"] = point.wall_time_s;
     point_list.push_back(entry);
   }
-  return {{"mode", mode},
-          {"forces_terms", force_terms},
-          {"points", point_list},
-          {"comparison", mills_comparison_json(comparison)}};
+  nlohmann::ordered_json section = {{"mode", mode},
+                                    {"forces_terms", force_terms},
+                                    {"points", point_list},
+                                    {"comparison", mills_comparison_json(comparison)}};
+  // With stretch.fluid.warm_start: the forces that were ramped because their warm start failed.
+  if (std::any_of(points.begin(), points.end(),
+                  [](const auto& point) { return point.warm_start != WarmStart::off; })) {
+    section["warm_start_fallbacks"] =
+        std::count_if(points.begin(), points.end(), [](const auto& point) {
+          return point.warm_start == WarmStart::not_converged ||
+                 point.warm_start == WarmStart::force_law_limit;
+        });
+  }
+  return section;
 }
 
 }  // namespace rbcsim::cases

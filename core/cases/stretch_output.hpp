@@ -34,7 +34,11 @@ std::vector<double> stretch_fit_table_row(const StretchFitEvaluation& curve);
 // "transverse_inside_error_bar", "point_count"}; the stretch's and the stretch fit's.
 nlohmann::ordered_json mills_comparison_json(const StretchComparison& comparison);
 
-// {"mode", "forces_terms", "points": [...], "comparison": mills_comparison_json}.
+// How a fluid-mode force started (StretchPoint::warm_start): "warm", or "ramped" with the reason.
+std::string_view warm_start_name(WarmStart start);
+
+// {"mode", "forces_terms", "points": [...], "comparison": mills_comparison_json}, and with
+// stretch.fluid.warm_start each point's "start" and the count of "warm_start_fallbacks".
 nlohmann::ordered_json stretch_result_section(std::string_view mode,
                                               std::span<const std::string> force_terms,
                                               std::span<const StretchPoint> points,

@@ -3,6 +3,7 @@
 // a fluid of a third of plasma's viscosity (the steady shape does not depend on it; the steps to
 // reach it are nine times fewer, and this cell stays stable there up to 50 pN).
 #include "cases/fluid_stretch.hpp"
+#include "cases/stretch_output.hpp"
 
 #include <gtest/gtest.h>
 
@@ -136,10 +137,31 @@ TEST(FluidStretch, WarmStartSettlesAtTheEquilibriumInFewerSteps) {
   ASSERT_TRUE(quasi_static.ok()) << quasi_static.failure;
   ASSERT_EQ(warm.points.size(), 2u);
   EXPECT_GT(warm.points[1].iterations, 0u);  // the relaxation ran
+  EXPECT_EQ(warm.points[1].warm_start, cases::WarmStart::converged);
+  EXPECT_EQ(ramped.points[1].warm_start, cases::WarmStart::off);
   EXPECT_NEAR(warm.points[1].axial_um, quasi_static.points[1].axial_um, 0.01);
   EXPECT_NEAR(warm.points[1].transverse_um, quasi_static.points[1].transverse_um, 0.01);
   EXPECT_TRUE(warm.points[1].converged);
   EXPECT_LT(warm.points[1].steps, ramped.points[1].steps / 10);
+}
+
+// A warm start whose relaxation does not converge leaves the shape and ramps the force, as
+// without the option, and says so: each point's start and the fallbacks' count in result.json.
+TEST(FluidStretch, AWarmStartThatDoesNotConvergeRampsTheForceAndIsReported) {
+  auto settings = fluid_settings({0.0, 25.0});
+  settings.fluid.warm_start = true;
+  settings.relaxation_settings.max_iterations = 3;  // far too few to converge
+  const auto result = run(settings);
+  ASSERT_TRUE(result.ok()) << result.failure;
+  ASSERT_EQ(result.points.size(), 2u);
+  EXPECT_EQ(result.points[1].warm_start, cases::WarmStart::not_converged);
+  EXPECT_EQ(result.points[1].iterations, 0u);  // no warm start was used
+  EXPECT_TRUE(result.points[1].converged);     // the ramped force reached its steady shape
+  const auto json = cases::stretch_result_section("fluid", {}, result.points, {});
+  EXPECT_EQ(json["points"][1]["start"], "ramped: the warm start did not converge");
+  // At zero force the stress-free shape is its own equilibrium: that start is warm.
+  EXPECT_EQ(json["points"][0]["start"], "warm");
+  EXPECT_EQ(json["warm_start_fallbacks"], 1);
 }
 
 // A force not steady within its time is reported, not accepted: converged false, the run goes on
