@@ -140,6 +140,30 @@ TEST(SuspensionPacking, RefusesCellsPlacedTooClose) {
   EXPECT_EQ(problem(tube, {{Vec3(2, 0, 0), along_x, 0}, {Vec3(11, 0, 0), along_x, 0}}), "");
 }
 
+// A cell placed by hand at 0.8 of its size 1.5 um off the axis of a 10 um tube keeps the 0.25 um
+// wall gap there (3.9 x 0.8 = 3.1 um of radius reach 4.6 um), but grown to full size it would
+// reach 5.4 um, through the wall: an input error naming suspension.cells, never a cell grown
+// through the wall.
+TEST(SuspensionPacking, RefusesACellPlacedByHandThatWouldGrowThroughTheWall) {
+  const std::vector<mesh::TriangleMesh> prototypes{shipped_mesh("discocyte")};
+  PackingSettings settings{0.75, 0.25, 1, 1};
+  settings.scale = 0.8;
+  const std::vector<std::size_t> cells{0};
+  const PackingTube tube{5.0, 20.0};
+  const Vec3 along_x(1.0, 0.0, 0.0);
+  try {
+    (void)place_cells_in_tube(prototypes, cells, {{{Vec3(2, 1.5, 0), along_x, 0}}}, tube, settings);
+    ADD_FAILURE() << "placed";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("suspension.cells: cell 0 reaches"), std::string::npos)
+        << error.what();
+    EXPECT_NE(std::string(error.what()).find("once grown to full size"), std::string::npos);
+  }
+  // On the axis it grows clear of the wall.
+  EXPECT_NO_THROW((void)place_cells_in_tube(prototypes, cells, {{{Vec3(2, 0, 0), along_x, 0}}},
+                                            tube, settings));
+}
+
 // Six discocytes and stomatocytes between flat walls 12 um apart, periodic over 16 um in x and
 // 12 um in z (H 0.24): every vertex the wall gap off both walls, every pair of cells the cell gap
 // apart across both periods.
