@@ -214,22 +214,22 @@ class Packer {
     for (std::size_t c = 0; c < cells_.size(); ++c) {
       const auto count = prototypes_[cells_[c].prototype].offsets_um.size();
       Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity()), high = -low;
-      std::optional<WallShortfall> worst;
+      WallShortfall worst{-std::numeric_limits<double>::infinity()};
       for (std::size_t v = offset; v < offset + count; ++v) {
         low = low.cwiseMin(positions_[v]);
         high = high.cwiseMax(positions_[v]);
         const auto wall = wall_shortfall(c, v);
-        if (!worst || wall.shortfall_um > worst->shortfall_um) worst = wall;
+        if (wall.shortfall_um > worst.shortfall_um) worst = wall;
       }
       offset += count;
-      if (worst && worst->shortfall_um > 0.0 && worst->once_grown) {
-        return "cell " + std::to_string(c) + " reaches " + format_number(worst->shortfall_um) +
+      if (worst.shortfall_um > 0.0 && worst.once_grown) {
+        return "cell " + std::to_string(c) + " reaches " + format_number(worst.shortfall_um) +
                " um through " + walls_of(space_) + " once grown to full size (from " +
                format_number(settings_.scale) + ", suspension.packing_scale)";
       }
-      if (worst && worst->shortfall_um > 0.0) {
+      if (worst.shortfall_um > 0.0) {
         return "cell " + std::to_string(c) + " comes within " +
-               format_number(settings_.wall_gap_um - worst->shortfall_um) + " um of " +
+               format_number(settings_.wall_gap_um - worst.shortfall_um) + " um of " +
                walls_of(space_) + ": closer to the wall than the wall repulsion's range, " +
                format_number(settings_.wall_gap_um) + " um";
       }
