@@ -4,7 +4,32 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/registry.hpp"
+
 namespace rbcsim::cases {
+namespace {
+
+struct NamedWallLaw {
+  std::string_view name;
+  WallLaw law;
+};
+constexpr NamedWallLaw kWallLaws[] = {{"pressure", WallLaw::pressure},
+                                      {"barrier", WallLaw::barrier}};
+
+}  // namespace
+
+std::vector<std::string> wall_law_names() { return entry_names(kWallLaws); }
+
+std::string wall_law_name(WallLaw law) {
+  for (const auto& entry : kWallLaws) {
+    if (entry.law == law) return std::string(entry.name);
+  }
+  throw std::logic_error("wall law: not in the table");
+}
+
+WallLaw wall_law_named(std::string_view name) {
+  return find_entry(kWallLaws, name, "suspension.wall_law").law;
+}
 
 WallDistance tube_wall_distance(const Vec3& position_um, double radius_um) {
   const double r_um = std::hypot(position_um.y(), position_um.z());

@@ -17,6 +17,9 @@
 
 #include <functional>
 #include <span>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "common/vec3.hpp"
 
@@ -24,6 +27,12 @@ namespace rbcsim::cases {
 
 // The wall's force law (suspension.wall_law; the header above).
 enum class WallLaw { pressure, barrier };
+
+// The laws' names (suspension.wall_law), one table for both ways (common/registry.hpp).
+std::vector<std::string> wall_law_names();
+std::string wall_law_name(WallLaw law);
+// Throws InputError naming suspension.wall_law for a name not in wall_law_names().
+WallLaw wall_law_named(std::string_view name);
 
 struct WallRepulsion {
   double force_at_wall_pN = 0.0;  // 0: none; the pressure law's push at contact

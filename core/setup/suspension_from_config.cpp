@@ -139,8 +139,7 @@ void read_interactions(const config::Config& config, Settings& settings) {
   }
   settings.wall_repulsion_pN_per_um2 = config.number("suspension.wall_repulsion_pN_per_um2");
   settings.wall_repulsion_range_um = config.number("suspension.wall_repulsion_range_um");
-  settings.wall_law = config.string("suspension.wall_law") == "barrier" ? cases::WallLaw::barrier
-                                                                        : cases::WallLaw::pressure;
+  settings.wall_law = cases::wall_law_named(config.string("suspension.wall_law"));
   settings.contact = {config.number("suspension.contact_force_pN"),
                       config.number("suspension.contact_range_um"),
                       contact::contact_law_named(config.string("suspension.contact_law")),

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cases/wall_repulsion.hpp"
+#include "common/errors.hpp"
 
 namespace rbcsim::cases {
 namespace {
@@ -84,6 +85,13 @@ TEST(WallRepulsion, TheBarrierHoldsAVertexThePressureLawLetsThrough) {
   };
   EXPECT_LE(resting_distance({8.0, 0.5}), 0.0);
   EXPECT_NEAR(resting_distance({8.0, 0.5, WallLaw::barrier}), 0.5 / (1.0 + std::sqrt(20.0)), 1e-6);
+}
+
+// suspension.wall_law's names, both ways, and one clear error for any other.
+TEST(WallRepulsion, LawsAreChosenByName) {
+  for (const auto& name : wall_law_names()) EXPECT_EQ(wall_law_name(wall_law_named(name)), name);
+  EXPECT_EQ(wall_law_named("barrier"), WallLaw::barrier);
+  EXPECT_THROW((void)wall_law_named("wall"), InputError);
 }
 
 }  // namespace

@@ -96,7 +96,8 @@ void add_suspension_options(OptionTable& table) {
                   "The tube wall's push on the membrane at contact, as a pressure (as "
                   "capillary.wall_repulsion_pN_per_um2).")
       .at_least(0.0);
-  table.add_choice("suspension.wall_law", {"pressure", "barrier"}, "pressure",
+  table.add_choice("suspension.wall_law", cases::wall_law_names(),
+                   cases::wall_law_name(kSuspensionDefaults.wall_law),
                    "The wall's force law: pressure (wall_repulsion_pN_per_um2 (1 - d/r)^2 over "
                    "a vertex's share of the area, finite at contact) or barrier (the cells' "
                    "surface contact law against the wall: a quarter of that (r/d - 1)^2, the "
